@@ -3,8 +3,6 @@
 #include <sstream>
 #include <utility>
 
-#include "plyform/law/detail/step.hpp"
-
 namespace plyform::law {
 namespace {
 
@@ -24,6 +22,7 @@ InvalidParameters::InvalidParameters(std::vector<ConstantError> errors)
 Law::Law(Parameters p) : p_(std::move(p)) {
   if (auto errors = validate(p_); !errors.empty())
     throw InvalidParameters(std::move(errors));
+  q_ = detail::prepare(p_);
 }
 
 NodeHistory Law::initial_history(double gap) const {
@@ -42,8 +41,42 @@ NodeHistory Law::initial_history(double gap) const {
 }
 
 Response Law::update(const Increment& in, NodeHistory& h) const {
-  return detail::step(p_, in, h);
+  return detail::step(p_, q_, detail::IncrementAccess{in}, detail::NodeHistoryAccess{h});
 }
+
+namespace {
+
+// Accessors over entry i of the host's arrays: the kernel reads and writes them in place.
+struct BatchHistoryAccess {
+  const BatchHistory& b;
+  std::size_t i;
+  NodeState state() const { return static_cast<NodeState>(b.state[i]); }
+  void set_state(NodeState s) const { b.state[i] = static_cast<std::int32_t>(s); }
+  double& beta() const { return b.beta[i]; }
+  double& gap() const { return b.gap[i]; }
+  double& slip(int k) const { return (k == 0 ? b.slip_x : b.slip_y)[i]; }
+  double& opening(int k) const { return (k == 0 ? b.opening_x : b.opening_y)[i]; }
+  double& e_damage() const { return b.e_damage[i]; }
+  double& e_viscous() const { return b.e_viscous[i]; }
+  double& e_friction() const { return b.e_friction[i]; }
+  double& e_damping() const { return b.e_damping[i]; }
+  double& e_healing() const { return b.e_healing[i]; }
+};
+
+struct BatchInputAccess {
+  const BatchInput& in;
+  std::size_t i;
+  double gap() const { return in.gap[i]; }
+  double slip(int k) const { return (k == 0 ? in.slip_x : in.slip_y)[i]; }
+  double dt() const { return in.dt; }
+  double temperature() const { return in.temperature[i]; }
+  double k_normal() const { return in.k_normal[i]; }
+  double k_tangent() const { return in.k_tangent[i]; }
+  double area() const { return in.area[i]; }
+  double mass() const { return in.mass != nullptr ? in.mass[i] : 0.0; }
+};
+
+}  // namespace
 
 NodeHistory load_history(const BatchHistory& h, std::size_t i) {
   NodeHistory v;
@@ -78,21 +111,8 @@ void store_history(const BatchHistory& h, std::size_t i, const NodeHistory& v) {
 }
 
 void Law::update_batch(const BatchInput& in, const BatchHistory& h, const BatchOutput& out) const {
-  const Parameters& p = p_;
   for (std::size_t i = 0; i < in.count; ++i) {
-    Increment inc;
-    inc.gap = in.gap[i];
-    inc.slip[0] = in.slip_x[i];
-    inc.slip[1] = in.slip_y[i];
-    inc.dt = in.dt;
-    inc.temperature = in.temperature[i];
-    inc.k_normal = in.k_normal[i];
-    inc.k_tangent = in.k_tangent[i];
-    inc.area = in.area[i];
-    inc.mass = in.mass != nullptr ? in.mass[i] : 0.0;
-    NodeHistory v = load_history(h, i);
-    const Response r = detail::step(p, inc, v);
-    store_history(h, i, v);
+    const Response r = detail::step(p_, q_, BatchInputAccess{in, i}, BatchHistoryAccess{h, i});
     out.pressure[i] = r.pressure;
     out.tau_x[i] = r.tau[0];
     out.tau_y[i] = r.tau[1];

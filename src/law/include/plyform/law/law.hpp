@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "plyform/law/detail/step.hpp"
 #include "plyform/law/node_state.hpp"
 #include "plyform/law/parameters.hpp"
 #include "plyform/law/user_constants.hpp"
@@ -91,7 +92,7 @@ class Law {
   /// node takes at first contact).
   [[nodiscard]] NodeHistory initial_history(double gap) const;
 
-  /// One node, one cycle.
+  /// One node, one cycle (dt > 0).
   Response update(const Increment& in, NodeHistory& h) const;
 
   /// Many nodes, one cycle: the same arithmetic as `update`, over host-owned arrays.
@@ -102,6 +103,7 @@ class Law {
 
  private:
   Parameters p_;
+  detail::Prepared q_;
 };
 
 /// Reads and writes entry `i` of batch history arrays.
