@@ -1,0 +1,69 @@
+#include "keyword_registry.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace plyform::keyword {
+
+// Each keyword lives in keywords/<name>.cpp with its card table and handler; adding one is
+// one declaration and one table line here.
+KeywordSpec keyword_keyword();
+KeywordSpec title_keyword();
+KeywordSpec end_keyword();
+KeywordSpec comment_keyword();
+KeywordSpec include_keyword();
+KeywordSpec include_path_keyword();
+KeywordSpec parameter_keyword();
+KeywordSpec define_curve_keyword();
+KeywordSpec user_interface_friction_keyword();
+
+std::span<const KeywordSpec> keyword_registry() {
+  static const std::array kRegistry{
+      keyword_keyword(),   title_keyword(),        end_keyword(),
+      comment_keyword(),   include_keyword(),      include_path_keyword(),
+      parameter_keyword(), define_curve_keyword(), user_interface_friction_keyword(),
+  };
+  return kRegistry;
+}
+
+namespace {
+
+const KeywordSpec* find_exact(std::string_view name) {
+  const auto registry = keyword_registry();
+  const auto it = std::find_if(registry.begin(), registry.end(),
+                               [&](const KeywordSpec& spec) { return spec.name == name; });
+  return it == registry.end() ? nullptr : &*it;
+}
+
+bool supports(const KeywordSpec& spec, std::string_view option) {
+  return std::find(spec.options.begin(), spec.options.end(), option) != spec.options.end();
+}
+
+}  // namespace
+
+KeywordLookup find_keyword(std::string_view name) {
+  KeywordLookup longest;
+  if (const KeywordSpec* spec = find_exact(name)) {
+    if (supports(*spec, "")) {
+      return {spec, "", true};
+    }
+    longest = {spec, "", false};
+  }
+  for (std::size_t cut = name.rfind('_'); cut != std::string_view::npos && cut > 0;
+       cut = name.rfind('_', cut - 1)) {
+    const KeywordSpec* spec = find_exact(name.substr(0, cut));
+    if (spec == nullptr) {
+      continue;
+    }
+    const std::string_view option = name.substr(cut + 1);
+    if (supports(*spec, option)) {
+      return {spec, std::string(option), true};
+    }
+    if (longest.spec == nullptr) {
+      longest = {spec, std::string(option), false};
+    }
+  }
+  return longest;
+}
+
+}  // namespace plyform::keyword
