@@ -65,7 +65,10 @@ void ReaderSession::read_file(const fs::path& path, const std::string& display_n
     contents << in.rdbuf();
   } else {
     if (included_from.line == 0) {
-      report_error({{display_name, 0}, "", "", "cannot open the deck"});
+      Diagnostic d;  // built field by field: g++ 12 warns falsely on the aggregate form
+      d.where.file = display_name;
+      d.message = "cannot open the deck";
+      report_error(std::move(d));
     } else {
       report_error({included_from, "*INCLUDE", "FILENAME",
                     fmt::format("cannot open include file '{}'", display_name)});

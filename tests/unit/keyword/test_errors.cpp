@@ -168,9 +168,13 @@ TEST(Errors, ReportsEveryBlockAndKeepsReading) {
 }
 
 TEST(Errors, DiagnosticFormat) {
-  Diagnostic d{{"a.k", 0}, "", "", "cannot open the deck"};
+  Diagnostic d;
+  d.where.file = "a.k";
+  d.message = "cannot open the deck";
   EXPECT_EQ(d.to_string(), "a.k: cannot open the deck");
-  d = {{"a.k", 3}, "*NODE", "", "unsupported keyword"};
+  d.where.line = 3;
+  d.keyword = "*NODE";
+  d.message = "unsupported keyword";
   EXPECT_EQ(d.to_string(), "a.k:3: *NODE: unsupported keyword");
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+// The subcommands of `plyform`, callable in-process. Each returns the exit status and writes
+// results to `out`, diagnostics to `err`.
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+
+namespace plyform::app {
+
+struct LawOptions {
+  std::filesystem::path deck;
+  std::filesystem::path path_csv;
+  std::optional<std::filesystem::path> output;  ///< none: write to `out`
+  std::optional<double> penalty;                ///< normal penalty per area; none: C_N
+  std::optional<int> interface_id;              ///< NOSID; needed when the deck has several
+};
+
+/// `plyform law DECK.k --path PATH.csv [-o OUT.csv] [--penalty K] [--interface ID]`
+int run_law(const LawOptions& options, std::ostream& out, std::ostream& err);
+
+/// `plyform check DECK.k`
+int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err);
+
+}  // namespace plyform::app

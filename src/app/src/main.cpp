@@ -1,0 +1,48 @@
+// plyform: explicit FE for thermoforming of multi-layer sheets. This file only parses the
+// command line and hands over to the subcommands of plyform/app/commands.hpp.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "plyform/app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"plyform: explicit finite elements for the thermoforming of multi-layer sheets"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "plyform 0.1.0");
+
+  std::filesystem::path check_deck;
+  CLI::App* check = app.add_subcommand("check", "Read and validate a deck; print a summary");
+  check->add_option("DECK", check_deck, "keyword deck (.k)")->required();
+
+  plyform::app::LawOptions law;
+  std::filesystem::path law_output;
+  double penalty = 0.0;
+  int interface_id = 0;
+  CLI::App* law_cmd = app.add_subcommand(
+      "law", "Drive one contact point with the deck's *USER_INTERFACE_FRICTION law");
+  law_cmd->add_option("DECK", law.deck, "keyword deck with a *USER_INTERFACE_FRICTION")->required();
+  law_cmd->add_option("--path", law.path_csv, "CSV: time,gap,slip_x,slip_y,temperature")
+      ->required();
+  auto* out_opt =
+      law_cmd->add_option("-o,--output", law_output, "CSV to write (default: standard output)");
+  auto* pen_opt =
+      law_cmd->add_option("--penalty", penalty, "normal penalty stiffness per area (default: C_N)");
+  auto* id_opt = law_cmd->add_option("--interface", interface_id,
+                                     "NOSID of the law to drive when the deck has several");
+
+  CLI11_PARSE(app, argc, argv);
+
+  if (check->parsed())
+    return plyform::app::run_check(check_deck, std::cout, std::cerr);
+  if (law_cmd->parsed()) {
+    if (*out_opt)
+      law.output = law_output;
+    if (*pen_opt)
+      law.penalty = penalty;
+    if (*id_opt)
+      law.interface_id = interface_id;
+    return plyform::app::run_law(law, std::cout, std::cerr);
+  }
+  return 2;
+}
