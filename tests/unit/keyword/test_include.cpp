@@ -9,7 +9,7 @@
 namespace plyform::keyword {
 namespace {
 
-using testing::TempDir;
+using plyform::test::TempDir;
 
 std::string all_errors(const ReadResult& result) {
   std::string out;

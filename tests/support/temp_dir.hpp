@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace plyform::keyword::testing {
+namespace plyform::test {
 
 /// A fresh folder under the system temp folder, removed with its contents at scope end.
 class TempDir {
@@ -14,7 +14,7 @@ class TempDir {
   TempDir() {
     std::random_device device;
     path_ = std::filesystem::temp_directory_path() /
-            ("plyform_kw_" + std::to_string(device()) + std::to_string(device()));
+            ("plyform_test_" + std::to_string(device()) + std::to_string(device()));
     std::filesystem::create_directories(path_);
   }
   TempDir(const TempDir&) = delete;
@@ -39,4 +39,4 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-}  // namespace plyform::keyword::testing
+}  // namespace plyform::test

@@ -1,0 +1,143 @@
+// `plyform check`: valid decks summarised with the law's constants by name and unit; every
+// error located by file, line and keyword; non-zero exit; third-party decks never crash it.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "plyform/app/commands.hpp"
+#include "temp_dir.hpp"
+
+namespace plyform::app {
+namespace {
+
+constexpr const char* kValid = R"(*KEYWORD
+*TITLE
+probe
+*PARAMETER
+R   smax       0.3
+*DEFINE_CURVE
+         7
+             300.0               0.3
+             500.0               0.1
+*USER_INTERFACE_FRICTION
+         1        13         0
+         1      30.0     &smax               300.0     500.0    3.0E-5       0.0
+                 1.0    1.0E-6         0        -7
+*END
+)";
+
+struct CheckRun {
+  int status;
+  std::string out, err;
+};
+
+CheckRun check(const std::filesystem::path& deck) {
+  std::ostringstream out, err;
+  const int status = run_check(deck, out, err);
+  return {status, out.str(), err.str()};
+}
+
+TEST(CheckCommand, ValidDeckPrintsTheLawByName) {
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("probe.k", kValid));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("valid"), std::string::npos);
+  EXPECT_NE(r.out.find("SMAX_LO"), std::string::npos);
+  EXPECT_NE(r.out.find("[stress/length]"), std::string::npos);
+  EXPECT_NE(r.out.find("load curve 7"), std::string::npos);
+  EXPECT_NE(r.out.find("= SMAX_LO (default)"), std::string::npos);
+  // Derived quantities against their closed forms: omega = 0.3^2/30, g_c = 0.3/30.
+  EXPECT_NE(r.out.find("omega = sigma_max^2 / C_N = 0.003"), std::string::npos);
+  EXPECT_NE(r.out.find("g_c = sigma_max / C_N = 0.01"), std::string::npos);
+}
+
+struct BadDeck {
+  const char* what;
+  const char* from;  // text of kValid to replace
+  const char* to;
+  const char* message;  // expected part of stderr
+};
+
+class CheckErrors : public ::testing::TestWithParam<BadDeck> {};
+
+TEST_P(CheckErrors, AreLocatedAndExitNonZero) {
+  const BadDeck& c = GetParam();
+  std::string text = kValid;
+  const auto at = text.find(c.from);
+  ASSERT_NE(at, std::string::npos) << c.from;
+  text.replace(at, std::string(c.from).size(), c.to);
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("deck.k", text));
+  EXPECT_NE(r.status, 0) << c.what;
+  EXPECT_NE(r.err.find(c.message), std::string::npos) << c.what << "\n" << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryClass, CheckErrors,
+    ::testing::Values(
+        BadDeck{"out-of-range constant", "    1.0E-6         0", "    1.0E-6         5",
+                "deck.k:13: *USER_INTERFACE_FRICTION: field UC12 (FRIC): constant UC12 FRIC = 5"},
+        BadDeck{"undefined curve", "        -7", "        -8",
+                "deck.k:13: *USER_INTERFACE_FRICTION: field UC13 (MU_LO): constant UC13 MU_LO = "
+                "-8: refers to load curve 8, which is not defined"},
+        BadDeck{"missing required constant", "    3.0E-5", "          ",
+                "deck.k:12: *USER_INTERFACE_FRICTION: field UC7 (ETA): constant UC7 ETA is "
+                "required"},
+        BadDeck{"unsupported keyword", "*DEFINE_CURVE\n", "*NODE\n", "deck.k:6: *NODE"},
+        BadDeck{"bad number", "     &smax", "      0.3x", "deck.k:12: *USER_INTERFACE_FRICTION"},
+        BadDeck{"undefined parameter", "     &smax", "     &smox", "deck.k:12"},
+        BadDeck{"duplicate curve id", "*USER_INTERFACE_FRICTION\n",
+                "*DEFINE_CURVE\n         7\n0.0,1.0\n1.0,2.0\n*USER_INTERFACE_FRICTION\n",
+                "*DEFINE_CURVE: field LCID: curve id 7 is already defined at"}));
+
+TEST(CheckCommand, MissingDeckIsAnError) {
+  const CheckRun r = check("/nonexistent/deck.k");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("deck.k"), std::string::npos);
+}
+
+// The third-party decks of ../shared/decks/real: `check` either accepts each or stops with
+// errors that all name a file and a line; never a crash.
+TEST(CheckCommand, RealDecksAreAcceptedOrRejectedWithLocatedErrors) {
+  const std::filesystem::path root =
+      std::filesystem::path(PLYFORM_SOURCE_DIR) / ".." / "shared" / "decks" / "real";
+  std::ifstream manifest(root / "MANIFEST.tsv");
+  if (!manifest)
+    GTEST_SKIP() << "no ../shared/decks/real here";
+  std::string line;
+  std::getline(manifest, line);  // header
+  int decks = 0;
+  while (std::getline(manifest, line)) {
+    std::istringstream row(line);
+    std::string path, repo, src, commit, bytes, sha, role;
+    std::getline(row, path, '\t');
+    for (std::string* f : {&repo, &src, &commit, &bytes, &sha, &role})
+      std::getline(row, *f, '\t');
+    if (role != "deck")
+      continue;
+    ++decks;
+    const CheckRun r = check(root / path);
+    if (r.status == 0)
+      continue;
+    std::istringstream lines(r.err);
+    std::string e;
+    int errors = 0;
+    while (std::getline(lines, e)) {
+      if (e.rfind("error: ", 0) != 0)
+        continue;
+      ++errors;
+      // "error: FILE:LINE: *KEYWORD..." (a file that cannot be opened has no line).
+      static const std::regex located(R"(^error: [^:]+:[0-9]+: \*[A-Za-z_0-9-]+.*)");
+      EXPECT_TRUE(std::regex_match(e, located) || e.find("cannot open") != std::string::npos)
+          << path << ": " << e;
+    }
+    EXPECT_GT(errors, 0) << path;
+  }
+  EXPECT_EQ(decks, 29);
+}
+
+}  // namespace
+}  // namespace plyform::app
