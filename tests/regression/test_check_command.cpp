@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -93,6 +92,24 @@ INSTANTIATE_TEST_SUITE_P(
                 "*DEFINE_CURVE\n         7\n0.0,1.0\n1.0,2.0\n*USER_INTERFACE_FRICTION\n",
                 "*DEFINE_CURVE: field LCID: curve id 7 is already defined at"}));
 
+// "error: FILE:LINE: *KEYWORD...": a file, a line number, then the keyword.
+bool located(const std::string& e) {
+  const std::string head = "error: ";
+  if (e.rfind(head, 0) != 0)
+    return false;
+  const auto keyword = e.find(": *", head.size());
+  if (keyword == std::string::npos)
+    return false;
+  const auto colon = e.rfind(':', keyword - 1);
+  if (colon == std::string::npos || colon <= head.size() || colon + 1 >= keyword)
+    return false;
+  for (auto i = colon + 1; i < keyword; ++i) {
+    if (e[i] < '0' || e[i] > '9')
+      return false;
+  }
+  return true;
+}
+
 TEST(CheckCommand, MissingDeckIsAnError) {
   const CheckRun r = check("/nonexistent/deck.k");
   EXPECT_NE(r.status, 0);
@@ -130,9 +147,7 @@ TEST(CheckCommand, RealDecksAreAcceptedOrRejectedWithLocatedErrors) {
         continue;
       ++errors;
       // "error: FILE:LINE: *KEYWORD..." (a file that cannot be opened has no line).
-      static const std::regex located(R"(^error: [^:]+:[0-9]+: \*[A-Za-z_0-9-]+.*)");
-      EXPECT_TRUE(std::regex_match(e, located) || e.find("cannot open") != std::string::npos)
-          << path << ": " << e;
+      EXPECT_TRUE(located(e) || e.find("cannot open") != std::string::npos) << path << ": " << e;
     }
     EXPECT_GT(errors, 0) << path;
   }
