@@ -1,11 +1,13 @@
 #include "plyform/keyword/card_reader.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "plyform/keyword/number_parser.hpp"
 #include "text_utils.hpp"
@@ -27,22 +29,29 @@ std::string format_number(double value, FieldType type) {
 /// Checks spec's allowed range; empty string when the value is allowed.
 std::string range_problem(const FieldSpec& spec, double value) {
   const bool low = spec.min_value && value < *spec.min_value;
-  const bool high = spec.max_value && value > *spec.max_value;
+  const bool high =
+      spec.max_value && (spec.max_exclusive ? value >= *spec.max_value : value > *spec.max_value);
   if (!low && !high) {
+    if (!spec.allowed.empty() &&
+        std::find(spec.allowed.begin(), spec.allowed.end(), value) == spec.allowed.end()) {
+      return fmt::format("value {} is not supported: must be one of {}{}{}",
+                         format_number(value, spec.type), fmt::join(spec.allowed, ", "),
+                         spec.allowed_note.empty() ? "" : "; ", spec.allowed_note);
+    }
     return {};
   }
   const std::string shown = format_number(value, spec.type);
   if (spec.min_value && spec.max_value) {
-    return fmt::format("value {} is out of range: must be in [{}, {}]", shown,
+    return fmt::format("value {} is out of range: must be in [{}, {}{}", shown,
                        format_number(*spec.min_value, spec.type),
-                       format_number(*spec.max_value, spec.type));
+                       format_number(*spec.max_value, spec.type), spec.max_exclusive ? ")" : "]");
   }
   if (low) {
     return fmt::format("value {} is out of range: must be >= {}", shown,
                        format_number(*spec.min_value, spec.type));
   }
-  return fmt::format("value {} is out of range: must be <= {}", shown,
-                     format_number(*spec.max_value, spec.type));
+  return fmt::format("value {} is out of range: must be {} {}", shown,
+                     spec.max_exclusive ? "<" : "<=", format_number(*spec.max_value, spec.type));
 }
 
 /// Column where the first field taking the rest of the line starts (npos if none).

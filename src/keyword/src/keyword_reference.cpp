@@ -1,6 +1,7 @@
 #include "plyform/keyword/keyword_reference.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "keyword_registry.hpp"
 
@@ -32,15 +33,19 @@ std::string default_text(const FieldSpec& field) {
 }
 
 std::string range_text(const FieldSpec& field) {
+  if (!field.allowed.empty()) {
+    return fmt::format("{{{}}}", fmt::join(field.allowed, ", "));
+  }
   if (field.min_value && field.max_value) {
-    return fmt::format("[{}, {}]", number_text(*field.min_value, field.type),
-                       number_text(*field.max_value, field.type));
+    return fmt::format("[{}, {}{}", number_text(*field.min_value, field.type),
+                       number_text(*field.max_value, field.type), field.max_exclusive ? ")" : "]");
   }
   if (field.min_value) {
     return fmt::format(">= {}", number_text(*field.min_value, field.type));
   }
   if (field.max_value) {
-    return fmt::format("<= {}", number_text(*field.max_value, field.type));
+    return fmt::format("{} {}",
+                       field.max_exclusive ? "<" : "<=", number_text(*field.max_value, field.type));
   }
   return "";
 }

@@ -16,12 +16,72 @@ KeywordSpec include_path_keyword();
 KeywordSpec parameter_keyword();
 KeywordSpec define_curve_keyword();
 KeywordSpec user_interface_friction_keyword();
+KeywordSpec node_keyword();
+KeywordSpec element_solid_keyword();
+KeywordSpec part_keyword();
+KeywordSpec section_solid_keyword();
+KeywordSpec mat_elastic_keyword();
+KeywordSpec mat_001_keyword();
+KeywordSpec mat_mooney_rivlin_keyword();
+KeywordSpec mat_027_keyword();
+KeywordSpec hourglass_keyword();
+KeywordSpec set_node_list_keyword();
+KeywordSpec set_part_list_keyword();
+KeywordSpec boundary_spc_node_keyword();
+KeywordSpec boundary_spc_set_keyword();
+KeywordSpec boundary_prescribed_motion_node_keyword();
+KeywordSpec boundary_prescribed_motion_set_keyword();
+KeywordSpec initial_velocity_generation_keyword();
+KeywordSpec load_node_point_keyword();
+KeywordSpec load_node_set_keyword();
+KeywordSpec control_termination_keyword();
+KeywordSpec control_timestep_keyword();
+KeywordSpec control_energy_keyword();
+KeywordSpec control_hourglass_keyword();
+KeywordSpec control_units_keyword();
+KeywordSpec database_binary_d3plot_keyword();
+KeywordSpec database_glstat_keyword();
+KeywordSpec database_nodout_keyword();
+KeywordSpec database_history_node_keyword();
 
 std::span<const KeywordSpec> keyword_registry() {
   static const std::array kRegistry{
-      keyword_keyword(),   title_keyword(),        end_keyword(),
-      comment_keyword(),   include_keyword(),      include_path_keyword(),
-      parameter_keyword(), define_curve_keyword(), user_interface_friction_keyword(),
+      keyword_keyword(),
+      title_keyword(),
+      end_keyword(),
+      comment_keyword(),
+      include_keyword(),
+      include_path_keyword(),
+      parameter_keyword(),
+      define_curve_keyword(),
+      user_interface_friction_keyword(),
+      node_keyword(),
+      element_solid_keyword(),
+      part_keyword(),
+      section_solid_keyword(),
+      mat_elastic_keyword(),
+      mat_001_keyword(),
+      mat_mooney_rivlin_keyword(),
+      mat_027_keyword(),
+      hourglass_keyword(),
+      set_node_list_keyword(),
+      set_part_list_keyword(),
+      boundary_spc_node_keyword(),
+      boundary_spc_set_keyword(),
+      boundary_prescribed_motion_node_keyword(),
+      boundary_prescribed_motion_set_keyword(),
+      initial_velocity_generation_keyword(),
+      load_node_point_keyword(),
+      load_node_set_keyword(),
+      control_termination_keyword(),
+      control_timestep_keyword(),
+      control_energy_keyword(),
+      control_hourglass_keyword(),
+      control_units_keyword(),
+      database_binary_d3plot_keyword(),
+      database_glstat_keyword(),
+      database_nodout_keyword(),
+      database_history_node_keyword(),
   };
   return kRegistry;
 }

@@ -23,10 +23,10 @@ bool contains(const std::string& text, std::string_view part) {
 }
 
 TEST(Errors, UnknownKeyword) {
-  const Diagnostic d = single_error("*KEYWORD\n*NODE\n       1       0.0\n");
+  const Diagnostic d = single_error("*KEYWORD\n*ELEMENT_BEAM\n       1       1\n");
   EXPECT_EQ(d.where.file, "deck.k");
   EXPECT_EQ(d.where.line, 2);
-  EXPECT_EQ(d.keyword, "*NODE");
+  EXPECT_EQ(d.keyword, "*ELEMENT_BEAM");
   EXPECT_EQ(d.field, "");
   EXPECT_TRUE(contains(d.message, "unsupported keyword")) << d.message;
 }
@@ -144,7 +144,7 @@ TEST(Errors, BadParameterCards) {
 TEST(Errors, ReportsEveryBlockAndKeepsReading) {
   const ReadResult result = read_deck_text(
       "*KEYWORD\n"
-      "*NODE\n"  // 2: unsupported
+      "*ELEMENT_BEAM\n"  // 2: unsupported
       "1 0 0 0\n"
       "*DEFINE_CURVE\n"  // 4
       "1,0,x\n"          // 5: bad SFA

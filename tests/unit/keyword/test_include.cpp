@@ -46,7 +46,7 @@ TEST(Include, ChainWithRelativePathsAndParameters) {
 
 TEST(Include, ErrorsInIncludedFilesNameThatFile) {
   const TempDir dir;
-  dir.write("deck.k", "*KEYWORD\n*INCLUDE\ninc.k\n*NODE\n");
+  dir.write("deck.k", "*KEYWORD\n*INCLUDE\ninc.k\n*ELEMENT_BEAM\n");
   dir.write("inc.k", "$ header\n*DEFINE_CURVE\n1,0,bad\n0,0\n1,1\n");
   const ReadResult result = read_deck(dir.path() / "deck.k");
   ASSERT_EQ(result.errors.size(), 2u) << all_errors(result);

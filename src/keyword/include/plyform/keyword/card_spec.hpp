@@ -20,8 +20,13 @@ struct FieldSpec {
   std::optional<double> max_value{};
   std::string_view unit{};  ///< "-" for dimensionless; empty when it depends on use
   std::string_view description{};
-  bool required = false;      ///< a blank field is an error
-  bool rest_of_line = false;  ///< text taking the rest of the line (no comma splitting after it)
+  bool required = false;       ///< a blank field is an error
+  bool rest_of_line = false;   ///< text taking the rest of the line (no comma splitting after it)
+  bool max_exclusive = false;  ///< the range excludes max_value: [min, max)
+  /// Integer fields: the only values accepted (checked after the range); empty = any.
+  std::span<const int> allowed{};
+  /// Added to the message when a value is not in `allowed` (what is not supported, and why).
+  std::string_view allowed_note{};
 };
 
 /// How the names of fields of a repeated card are shown in messages.

@@ -1,20 +1,64 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "plyform/model/boundary_desc.hpp"
+#include "plyform/model/control_desc.hpp"
 #include "plyform/model/curve_desc.hpp"
+#include "plyform/model/database_desc.hpp"
+#include "plyform/model/element_solid_desc.hpp"
+#include "plyform/model/hourglass_desc.hpp"
+#include "plyform/model/initial_velocity_desc.hpp"
+#include "plyform/model/load_node_desc.hpp"
+#include "plyform/model/mat_elastic_desc.hpp"
+#include "plyform/model/mat_mooney_rivlin_desc.hpp"
+#include "plyform/model/node_desc.hpp"
+#include "plyform/model/part_desc.hpp"
+#include "plyform/model/section_solid_desc.hpp"
+#include "plyform/model/set_desc.hpp"
 #include "plyform/model/user_interface_friction_desc.hpp"
 
 namespace plyform::model {
 
 /// The whole deck as plain data keyed by deck ids, in the order the keywords were read.
-/// Each supported keyword adds one vector of its *Desc struct here.
+/// Each supported keyword adds one vector of its *Desc struct here; a *CONTROL_ or
+/// *DATABASE_ keyword that LS-DYNA reads once is an optional (the last one read wins, with a
+/// warning).
 struct ModelDesc {
   std::string title;            ///< *TITLE (the last one read)
   std::string keyword_options;  ///< text after *KEYWORD on its line (memory size, ...), if any
   std::vector<CurveDesc> curves;
   std::vector<UserInterfaceFrictionDesc> user_interface_frictions;
+
+  // Mesh
+  std::vector<NodeDesc> nodes;
+  std::vector<ElementSolidDesc> solids;
+  std::vector<PartDesc> parts;
+  std::vector<SectionSolidDesc> solid_sections;
+  std::vector<MatElasticDesc> elastic_materials;
+  std::vector<MatMooneyRivlinDesc> mooney_rivlin_materials;
+  std::vector<HourglassDesc> hourglasses;
+  std::vector<SetListDesc> node_sets;
+  std::vector<SetListDesc> part_sets;
+
+  // Loads, constraints, initial conditions
+  std::vector<BoundarySpcDesc> spcs;
+  std::vector<PrescribedMotionDesc> prescribed_motions;
+  std::vector<LoadNodeDesc> nodal_loads;
+  std::vector<InitialVelocityGenerationDesc> initial_velocities;
+
+  // Control and output
+  std::optional<ControlTerminationDesc> termination;
+  std::optional<ControlTimestepDesc> timestep;
+  std::optional<ControlEnergyDesc> energy;
+  std::optional<ControlHourglassDesc> control_hourglass;
+  std::optional<ControlUnitsDesc> units;
+  std::optional<DatabaseBinaryD3plotDesc> d3plot;
+  std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, *DATABASE_NODOUT
+  std::vector<DatabaseHistoryNodeDesc> history_nodes;
+
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened
 };
 

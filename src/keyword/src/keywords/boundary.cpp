@@ -1,0 +1,231 @@
+// *BOUNDARY_SPC_NODE/_SET(_ID) and *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET(_ID).
+#include <array>
+
+#include "../keyword_registry.hpp"
+#include "common_cards.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+constexpr FieldSpec target_field(std::string_view name, std::string_view description) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .min_value = 1,
+                   .unit = "-",
+                   .description = description,
+                   .required = true};
+}
+constexpr FieldSpec dof_flag(std::string_view name, std::string_view description) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .min_value = 0,
+                   .max_value = 1,
+                   .unit = "-",
+                   .description = description};
+}
+constexpr FieldSpec kCid{.name = "CID",
+                         .type = FieldType::kInteger,
+                         .unit = "-",
+                         .description =
+                             "coordinate system id: must be 0 (global axes; local "
+                             "systems are not supported yet)"};
+
+template <std::size_t N>
+constexpr std::array<FieldSpec, 8> spc_fields(const char (&target)[N],
+                                              std::string_view description) {
+  return {target_field(std::string_view(target, N - 1), description),
+          kCid,
+          dof_flag("DOFX", "1: x translation fixed"),
+          dof_flag("DOFY", "1: y translation fixed"),
+          dof_flag("DOFZ", "1: z translation fixed"),
+          dof_flag("DOFRX", "1: x rotation fixed"),
+          dof_flag("DOFRY", "1: y rotation fixed"),
+          dof_flag("DOFRZ", "1: z rotation fixed")};
+}
+constexpr std::array kSpcNodeFields = spc_fields("NID", "node id");
+constexpr std::array kSpcSetFields = spc_fields("NSID", "node set id");
+
+constexpr std::string_view kRepeatWithId =
+    "one per constraint, until the next keyword; under _ID each is preceded by its ID card";
+constexpr std::array kSpcNodeCards{
+    CardSpec{.title = "ID card", .fields = kIdCardFields, .presence = "with _ID only"},
+    CardSpec{.title = "Card 1", .fields = kSpcNodeFields, .presence = kRepeatWithId},
+};
+constexpr std::array kSpcSetCards{
+    CardSpec{.title = "ID card", .fields = kIdCardFields, .presence = "with _ID only"},
+    CardSpec{.title = "Card 1", .fields = kSpcSetFields, .presence = kRepeatWithId},
+};
+
+constexpr std::array<int, 3> kMotionDofs{1, 2, 3};
+constexpr std::array<int, 3> kVads{0, 1, 2};
+
+template <std::size_t N>
+constexpr std::array<FieldSpec, 8> motion_fields(const char (&target)[N],
+                                                 std::string_view description) {
+  return {target_field(std::string_view(target, N - 1), description),
+          FieldSpec{.name = "DOF",
+                    .type = FieldType::kInteger,
+                    .unit = "-",
+                    .description = "degree of freedom, LS-DYNA's code: 1, 2, 3 = x, y, z "
+                                   "translation",
+                    .required = true,
+                    .allowed = kMotionDofs,
+                    .allowed_note = "motion along a vector (4, -4, 8, -8), rotations (5-7) and "
+                                    "the other codes are not supported yet"},
+          FieldSpec{.name = "VAD",
+                    .type = FieldType::kInteger,
+                    .unit = "-",
+                    .description = "0 velocity, 1 acceleration, 2 displacement",
+                    .allowed = kVads,
+                    .allowed_note = "VAD 3 and 4 are not supported"},
+          FieldSpec{.name = "LCID",
+                    .type = FieldType::kInteger,
+                    .min_value = 1,
+                    .unit = "-",
+                    .description = "curve of the motion against time",
+                    .required = true},
+          FieldSpec{.name = "SF",
+                    .type = FieldType::kReal,
+                    .default_value = 1.0,
+                    .unit = "-",
+                    .description = "scale factor of the curve's ordinate"},
+          FieldSpec{.name = "VID",
+                    .type = FieldType::kInteger,
+                    .unit = "-",
+                    .description = "vector id (DOF 4 and 8 only): must be 0"},
+          FieldSpec{.name = "DEATH",
+                    .type = FieldType::kReal,
+                    .default_value = 1.0e28,
+                    .unit = "time",
+                    .description = "time the motion ends (0 is read as 1e28)"},
+          FieldSpec{.name = "BIRTH",
+                    .type = FieldType::kReal,
+                    .min_value = 0.0,
+                    .unit = "time",
+                    .description = "time the motion starts"}};
+}
+constexpr std::array kMotionNodeFields = motion_fields("NID", "node id");
+constexpr std::array kMotionSetFields = motion_fields("NSID", "node set id");
+constexpr std::string_view kMotionRepeat =
+    "one per motion, until the next keyword; under _ID each is preceded by its ID card";
+constexpr std::array kMotionNodeCards{
+    CardSpec{.title = "ID card", .fields = kIdCardFields, .presence = "with _ID only"},
+    CardSpec{.title = "Card 1", .fields = kMotionNodeFields, .presence = kMotionRepeat},
+};
+constexpr std::array kMotionSetCards{
+    CardSpec{.title = "ID card", .fields = kIdCardFields, .presence = "with _ID only"},
+    CardSpec{.title = "Card 1", .fields = kMotionSetFields, .presence = kMotionRepeat},
+};
+
+/// Reads the optional ID card of _ID; returns the data line that follows, or nothing when the
+/// block is done.
+struct IdAndLine {
+  int id = 0;
+  std::string heading;
+  std::optional<DataLine> line;
+};
+
+IdAndLine next_item(KeywordInput& in, std::span<const CardSpec> cards) {
+  IdAndLine item;
+  const auto first = in.next_nonblank_line();
+  if (!first || in.option() != "ID") {
+    item.line = first;
+    return item;
+  }
+  const CardValues id = in.read(cards[0], *first);
+  item.id = id.integer("ID");
+  item.heading = id.text("HEADING");
+  item.line = in.next_line();
+  if (!item.line) {
+    in.fail(first->line, "", "missing card 1 after the ID card");
+  }
+  return item;
+}
+
+void read_spc(KeywordInput& in, model::NodeTarget target, std::span<const CardSpec> cards) {
+  const std::string target_name = target == model::NodeTarget::kNode ? "NID" : "NSID";
+  for (IdAndLine item = next_item(in, cards); item.line; item = next_item(in, cards)) {
+    const CardValues v = in.read(cards[1], *item.line);
+    model::BoundarySpcDesc spc;
+    spc.target = target;
+    spc.target_id = v.integer(target_name);
+    spc.id = item.id;
+    spc.heading = std::move(item.heading);
+    spc.cid = v.integer("CID");
+    constexpr std::array<std::string_view, 6> kDofs{"DOFX",  "DOFY",  "DOFZ",
+                                                    "DOFRX", "DOFRY", "DOFRZ"};
+    for (std::size_t i = 0; i < kDofs.size(); ++i) {
+      spc.fixed[i] = v.integer(kDofs[i]) == 1;
+    }
+    spc.where = in.where(item.line->line);
+    require_zero(in, item.line->line, "CID", spc.cid, "a local coordinate system");
+    in.model().spcs.push_back(std::move(spc));
+  }
+}
+
+void read_motion(KeywordInput& in, model::NodeTarget target, std::span<const CardSpec> cards) {
+  const std::string target_name = target == model::NodeTarget::kNode ? "NID" : "NSID";
+  for (IdAndLine item = next_item(in, cards); item.line; item = next_item(in, cards)) {
+    const CardValues v = in.read(cards[1], *item.line);
+    model::PrescribedMotionDesc m;
+    m.target = target;
+    m.target_id = v.integer(target_name);
+    m.id = item.id;
+    m.heading = std::move(item.heading);
+    m.dof = v.integer("DOF");
+    m.vad = v.integer("VAD");
+    m.curve_id = v.integer("LCID");
+    m.scale = v.real("SF");
+    m.vid = v.integer("VID");
+    m.death = v.real("DEATH") == 0.0 ? 1.0e28 : v.real("DEATH");
+    m.birth = v.real("BIRTH");
+    m.where = in.where(item.line->line);
+    require_zero(in, item.line->line, "VID", m.vid, "a motion along a vector");
+    if (m.death <= m.birth) {
+      in.fail(item.line->line, "DEATH",
+              fmt::format("DEATH = {} is not after BIRTH = {}", m.death, m.birth));
+    }
+    in.model().prescribed_motions.push_back(std::move(m));
+  }
+}
+
+}  // namespace
+
+KeywordSpec boundary_spc_node_keyword() {
+  return {
+      .name = "BOUNDARY_SPC_NODE",
+      .options = kNoneOrId,
+      .handler = [](KeywordInput& in) { read_spc(in, model::NodeTarget::kNode, kSpcNodeCards); },
+      .cards = kSpcNodeCards,
+      .summary = "Fixed degrees of freedom of single nodes, in global axes."};
+}
+
+KeywordSpec boundary_spc_set_keyword() {
+  return {.name = "BOUNDARY_SPC_SET",
+          .options = kNoneOrId,
+          .handler = [](KeywordInput& in) { read_spc(in, model::NodeTarget::kSet, kSpcSetCards); },
+          .cards = kSpcSetCards,
+          .summary = "Fixed degrees of freedom of the nodes of a node set, in global axes."};
+}
+
+KeywordSpec boundary_prescribed_motion_node_keyword() {
+  return {.name = "BOUNDARY_PRESCRIBED_MOTION_NODE",
+          .options = kNoneOrId,
+          .handler =
+              [](KeywordInput& in) { read_motion(in, model::NodeTarget::kNode, kMotionNodeCards); },
+          .cards = kMotionNodeCards,
+          .summary =
+              "A velocity, acceleration or displacement of a node along a global axis, "
+              "given by a curve against time. _RIGID is not supported yet."};
+}
+
+KeywordSpec boundary_prescribed_motion_set_keyword() {
+  return {.name = "BOUNDARY_PRESCRIBED_MOTION_SET",
+          .options = kNoneOrId,
+          .handler =
+              [](KeywordInput& in) { read_motion(in, model::NodeTarget::kSet, kMotionSetCards); },
+          .cards = kMotionSetCards,
+          .summary = "As *BOUNDARY_PRESCRIBED_MOTION_NODE, for every node of a node set."};
+}
+
+}  // namespace plyform::keyword

@@ -1,0 +1,63 @@
+#pragma once
+// Cards and checks shared by several keywords: the title card of _TITLE, the ID card of _ID,
+// and the "not supported yet" check for fields that must stay 0.
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "../keyword_input.hpp"
+
+namespace plyform::keyword {
+
+inline constexpr std::array<std::string_view, 2> kNoneOrTitle{"", "TITLE"};
+inline constexpr std::array<std::string_view, 2> kNoneOrId{"", "ID"};
+inline constexpr std::array<std::string_view, 1> kNoOptions{""};
+
+inline constexpr std::array kTitleCardFields{
+    FieldSpec{.name = "TITLE",
+              .type = FieldType::kText,
+              .width = 80,
+              .description = "title (the _TITLE option)",
+              .rest_of_line = true},
+};
+
+inline constexpr std::array kIdCardFields{
+    FieldSpec{.name = "ID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "id of the item (the _ID option)"},
+    FieldSpec{.name = "HEADING",
+              .type = FieldType::kText,
+              .width = 70,
+              .description = "a name for the item",
+              .rest_of_line = true},
+};
+
+/// Fails with "<FIELD> = <value> ... is not supported yet" when a field that plyform cannot
+/// honour yet is not 0.
+inline void require_zero(KeywordInput& in, int line, std::string_view field, double value,
+                         std::string_view what) {
+  if (value != 0.0) {
+    in.fail(
+        line, std::string(field),
+        fmt::format("{} = {} ({}) is not supported yet; leave it blank or 0", field, value, what));
+  }
+}
+
+/// True when a data line that is not blank is left in the block.
+inline bool has_more_cards(const KeywordInput& in) {
+  for (const DataLine& line : in.remaining()) {
+    for (char c : line.text) {
+      if (c != ' ' && c != '\t' && c != '\r') {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace plyform::keyword

@@ -1,0 +1,256 @@
+// *CONTROL_TERMINATION, *CONTROL_TIMESTEP, *CONTROL_ENERGY, *CONTROL_UNITS.
+#include <array>
+#include <optional>
+
+#include "../keyword_registry.hpp"
+#include "common_cards.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+/// Stores a once-per-deck keyword: the last one read wins, with a warning naming the first.
+template <typename Desc>
+void store_once(KeywordInput& in, std::optional<Desc>& slot, Desc desc) {
+  if (slot) {
+    in.warn(in.keyword().line, "",
+            fmt::format("{} given again: this one replaces the one at {}:{}",
+                        in.keyword().display(), slot->where.file, slot->where.line));
+  }
+  slot = std::move(desc);
+}
+
+// --- *CONTROL_TERMINATION
+constexpr std::array kTerminationFields{
+    FieldSpec{.name = "ENDTIM",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "termination time"},
+    FieldSpec{.name = "ENDCYC",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "termination cycle (0: none)"},
+    FieldSpec{.name = "DTMIN",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "stop when the step falls below DTMIN x the initial step"},
+    FieldSpec{.name = "ENDENG",
+              .type = FieldType::kReal,
+              .unit = "-",
+              .description = "energy change limit; kept as written"},
+    FieldSpec{.name = "ENDMAS",
+              .type = FieldType::kReal,
+              .unit = "-",
+              .description = "mass change limit (mass scaling); kept as written"},
+    FieldSpec{.name = "NOSOL",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .max_value = 1,
+              .unit = "-",
+              .description = "1: read and check only"},
+};
+constexpr std::array kTerminationCards{
+    CardSpec{.title = "Card 1", .fields = kTerminationFields, .presence = "required"},
+};
+
+void read_control_termination(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (ENDTIM ENDCYC DTMIN ENDENG ENDMAS NOSOL)");
+  }
+  const CardValues v = in.read(kTerminationCards[0], *line);
+  store_once(in, in.model().termination,
+             model::ControlTerminationDesc{.end_time = v.real("ENDTIM"),
+                                           .end_cycle = v.integer("ENDCYC"),
+                                           .dtmin = v.real("DTMIN"),
+                                           .endeng = v.real("ENDENG"),
+                                           .endmas = v.real("ENDMAS"),
+                                           .nosol = v.integer("NOSOL"),
+                                           .where = in.where(line->line)});
+}
+
+// --- *CONTROL_TIMESTEP
+constexpr std::array kTimestepFields{
+    FieldSpec{.name = "DTINIT",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "initial time step (0: the solver chooses)"},
+    FieldSpec{.name = "TSSFAC",
+              .type = FieldType::kReal,
+              .default_value = 0.9,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the stable time step (0 is read as 0.9)"},
+    FieldSpec{.name = "ISDO",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .max_value = 3,
+              .unit = "-",
+              .description = "shell characteristic length option; kept as written"},
+    FieldSpec{.name = "TSLIMT",
+              .type = FieldType::kReal,
+              .unit = "time",
+              .description = "shell minimum time step; kept as written"},
+    FieldSpec{.name = "DT2MS",
+              .type = FieldType::kReal,
+              .unit = "time",
+              .description = "mass scaling: time step to keep (negative: mass added only to "
+                             "elements below |DT2MS|; 0: none)"},
+    FieldSpec{.name = "LCTM",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "curve of the maximum time step: must be 0 (not supported yet)"},
+    FieldSpec{.name = "ERODE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "erosion of elements below DTMIN; kept as written"},
+    FieldSpec{.name = "MS1ST",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "mass scaling at the first step only; kept as written"},
+};
+constexpr std::array kTimestepCards{
+    CardSpec{.title = "Card 1", .fields = kTimestepFields, .presence = "required"},
+};
+
+void read_control_timestep(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "",
+            "missing card 1 (DTINIT TSSFAC ISDO TSLIMT DT2MS LCTM ERODE MS1ST)");
+  }
+  const CardValues v = in.read(kTimestepCards[0], *line);
+  model::ControlTimestepDesc d{.dtinit = v.real("DTINIT"),
+                               .tssfac = v.real("TSSFAC") == 0.0 ? 0.9 : v.real("TSSFAC"),
+                               .isdo = v.integer("ISDO"),
+                               .tslimt = v.real("TSLIMT"),
+                               .dt2ms = v.real("DT2MS"),
+                               .lctm = v.integer("LCTM"),
+                               .erode = v.integer("ERODE"),
+                               .ms1st = v.integer("MS1ST"),
+                               .where = in.where(line->line)};
+  require_zero(in, line->line, "LCTM", d.lctm, "a curve of the maximum time step");
+  if (const auto card2 = in.next_nonblank_line()) {
+    in.fail(card2->line, "",
+            "card 2 of *CONTROL_TIMESTEP (DT2MSF DT2MSLC IMSCL ...) is not supported yet");
+  }
+  store_once(in, in.model().timestep, d);
+}
+
+// --- *CONTROL_ENERGY
+constexpr FieldSpec energy_flag(std::string_view name, double default_value,
+                                std::string_view description) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .default_value = default_value,
+                   .min_value = 0,
+                   .max_value = 2,
+                   .unit = "-",
+                   .description = description};
+}
+constexpr std::array kEnergyFields{
+    energy_flag("HGEN", 1, "hourglass energy: 1 not computed, 2 computed (0: default)"),
+    energy_flag("RWEN", 2, "rigid wall energy: 1 not computed, 2 computed"),
+    energy_flag("SLNTEN", 1, "sliding interface energy: 1 not computed, 2 computed"),
+    energy_flag("RYLEN", 1, "Rayleigh damping energy: 1 not computed, 2 computed"),
+    energy_flag("IRGEN", 2, "initial reference geometry energy: 1 not computed, 2 computed"),
+};
+constexpr std::array kEnergyCards{
+    CardSpec{.title = "Card 1", .fields = kEnergyFields, .presence = "required"},
+};
+
+int energy_value(const CardValues& v, std::string_view name, int default_value) {
+  const int value = v.integer(name);
+  return value == 0 ? default_value : value;
+}
+
+void read_control_energy(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (HGEN RWEN SLNTEN RYLEN IRGEN)");
+  }
+  const CardValues v = in.read(kEnergyCards[0], *line);
+  store_once(in, in.model().energy,
+             model::ControlEnergyDesc{.hgen = energy_value(v, "HGEN", 1),
+                                      .rwen = energy_value(v, "RWEN", 2),
+                                      .slnten = energy_value(v, "SLNTEN", 1),
+                                      .rylen = energy_value(v, "RYLEN", 1),
+                                      .irgen = energy_value(v, "IRGEN", 2),
+                                      .where = in.where(line->line)});
+}
+
+// --- *CONTROL_UNITS
+constexpr std::array kUnitsFields{
+    FieldSpec{.name = "LENGTH",
+              .type = FieldType::kText,
+              .description = "length unit (m, mm, cm, in, ft)"},
+    FieldSpec{
+        .name = "TIME", .type = FieldType::kText, .description = "time unit (sec, ms, micro_s)"},
+    FieldSpec{.name = "MASS",
+              .type = FieldType::kText,
+              .description = "mass unit (kg, g, mg, lb, slug, mtrc_ton)"},
+    FieldSpec{
+        .name = "TEMP", .type = FieldType::kText, .description = "temperature unit (K, C, F, R)"},
+};
+constexpr std::array kUnitsCards{
+    CardSpec{.title = "Card 1", .fields = kUnitsFields, .presence = "required"},
+};
+
+void read_control_units(KeywordInput& in) {
+  const CardValues v = in.next_card(kUnitsCards[0], "card 1 (LENGTH TIME MASS TEMP)");
+  if (const auto card2 = in.next_nonblank_line()) {
+    in.fail(card2->line, "",
+            "card 2 of *CONTROL_UNITS (user-defined unit factors) is not supported");
+  }
+  store_once(in, in.model().units,
+             model::ControlUnitsDesc{.length = v.text("LENGTH"),
+                                     .time = v.text("TIME"),
+                                     .mass = v.text("MASS"),
+                                     .temp = v.text("TEMP"),
+                                     .where = in.keyword_where()});
+}
+
+}  // namespace
+
+KeywordSpec control_termination_keyword() {
+  return {.name = "CONTROL_TERMINATION",
+          .options = kNoOptions,
+          .handler = read_control_termination,
+          .cards = kTerminationCards,
+          .summary = "When the run stops. Given twice, the last one is used (with a warning)."};
+}
+
+KeywordSpec control_timestep_keyword() {
+  return {.name = "CONTROL_TIMESTEP",
+          .options = kNoOptions,
+          .handler = read_control_timestep,
+          .cards = kTimestepCards,
+          .summary =
+              "Time step control: TSSFAC and DT2MS (mass scaling) are used; a blank or "
+              "0 TSSFAC is 0.9 as in LS-DYNA. Card 2 is not supported."};
+}
+
+KeywordSpec control_energy_keyword() {
+  return {.name = "CONTROL_ENERGY",
+          .options = kNoOptions,
+          .handler = read_control_energy,
+          .cards = kEnergyCards,
+          .summary =
+              "Which energies are computed for glstat (1 no, 2 yes); a written 0 takes "
+              "the default."};
+}
+
+KeywordSpec control_units_keyword() {
+  return {.name = "CONTROL_UNITS",
+          .options = kNoOptions,
+          .handler = read_control_units,
+          .cards = kUnitsCards,
+          .summary =
+              "Names of the deck's units, kept as text and shown by `plyform check`; "
+              "nothing is converted (the deck's units stay consistent units)."};
+}
+
+}  // namespace plyform::keyword

@@ -1,0 +1,239 @@
+// *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_HISTORY_NODE(_ID).
+#include <array>
+
+#include "../keyword_registry.hpp"
+#include "common_cards.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+// --- *DATABASE_BINARY_D3PLOT
+constexpr std::array kD3plotFields{
+    FieldSpec{.name = "DT",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "interval between states"},
+    FieldSpec{.name = "LCDT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "curve of the interval: must be 0 (not supported yet)"},
+    FieldSpec{.name = "BEAM",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "beam output option; kept as written"},
+    FieldSpec{.name = "NPLTC",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "number of states: if > 0, DT = ENDTIM / NPLTC"},
+    FieldSpec{.name = "PSETID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "part set written (0: every part)"},
+};
+constexpr std::array kD3plotCard2Fields{
+    FieldSpec{.name = "IOOPT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "kept as written"},
+    FieldSpec{.name = "RATE",
+              .type = FieldType::kReal,
+              .description = "filtering: must be 0 (not supported)"},
+    FieldSpec{.name = "CUTOFF",
+              .type = FieldType::kReal,
+              .description = "filtering: must be 0 (not supported)"},
+    FieldSpec{.name = "WINDOW",
+              .type = FieldType::kReal,
+              .description = "filtering: must be 0 (not supported)"},
+    FieldSpec{.name = "TYPE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "filtering: must be 0 (not supported)"},
+    FieldSpec{.name = "PSET",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "filtering: must be 0 (not supported)"},
+};
+constexpr std::array kD3plotCards{
+    CardSpec{.title = "Card 1", .fields = kD3plotFields, .presence = "required"},
+    CardSpec{.title = "Card 2", .fields = kD3plotCard2Fields, .presence = "optional"},
+};
+
+void read_d3plot(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (DT LCDT BEAM NPLTC PSETID)");
+  }
+  const CardValues v = in.read(kD3plotCards[0], *line);
+  model::DatabaseBinaryD3plotDesc d{.dt = v.real("DT"),
+                                    .lcdt = v.integer("LCDT"),
+                                    .beam = v.integer("BEAM"),
+                                    .npltc = v.integer("NPLTC"),
+                                    .part_set_id = v.integer("PSETID"),
+                                    .where = in.where(line->line)};
+  require_zero(in, line->line, "LCDT", d.lcdt, "a curve of the output interval");
+  if (const auto line2 = in.next_line()) {
+    const CardValues c = in.read(kD3plotCards[1], *line2);
+    for (std::string_view name : {"RATE", "CUTOFF", "WINDOW", "TYPE", "PSET"}) {
+      require_zero(in, line2->line, name, c.real(name), "filtering of the output");
+    }
+  }
+  if (in.model().d3plot) {
+    in.warn(in.keyword().line, "",
+            fmt::format("*DATABASE_BINARY_D3PLOT given again: this one replaces the one at {}:{}",
+                        in.model().d3plot->where.file, in.model().d3plot->where.line));
+  }
+  in.model().d3plot = d;
+}
+
+// --- *DATABASE_GLSTAT, *DATABASE_NODOUT
+constexpr std::array kAsciiFields{
+    FieldSpec{.name = "DT",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "interval between lines"},
+    FieldSpec{.name = "BINARY",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .max_value = 3,
+              .unit = "-",
+              .description = "LS-DYNA's file kind; plyform writes CSV whatever it is"},
+    FieldSpec{.name = "LCUR",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "curve of the interval: must be 0 (not supported yet)"},
+    FieldSpec{.name = "IOOPT",
+              .type = FieldType::kInteger,
+              .default_value = 1,
+              .unit = "-",
+              .description = "kept as written"},
+};
+constexpr std::array kAsciiCards{
+    CardSpec{.title = "Card 1", .fields = kAsciiFields, .presence = "required"},
+};
+
+void read_ascii(KeywordInput& in, std::string_view name) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (DT BINARY LCUR IOOPT)");
+  }
+  const CardValues v = in.read(kAsciiCards[0], *line);
+  model::DatabaseAsciiDesc d{.name = std::string(name),
+                             .dt = v.real("DT"),
+                             .binary = v.integer("BINARY"),
+                             .lcur = v.integer("LCUR"),
+                             .ioopt = v.integer("IOOPT"),
+                             .where = in.where(line->line)};
+  require_zero(in, line->line, "LCUR", d.lcur, "a curve of the output interval");
+  for (const model::DatabaseAsciiDesc& other : in.model().ascii_outputs) {
+    if (other.name == name) {
+      in.warn(in.keyword().line, "",
+              fmt::format("*DATABASE_{} given again: the one at {}:{} is also kept; the "
+                          "solver uses the last",
+                          name, other.where.file, other.where.line));
+    }
+  }
+  in.model().ascii_outputs.push_back(std::move(d));
+}
+
+// --- *DATABASE_HISTORY_NODE(_ID)
+constexpr std::string_view kHistoryId = "node id (blank or 0: none)";
+constexpr FieldSpec history_field() {
+  return FieldSpec{.name = "NID",
+                   .type = FieldType::kInteger,
+                   .min_value = 0,
+                   .unit = "-",
+                   .description = kHistoryId};
+}
+constexpr std::array kHistoryFields{history_field(), history_field(), history_field(),
+                                    history_field(), history_field(), history_field(),
+                                    history_field(), history_field()};
+constexpr std::array kHistoryIdFields{
+    FieldSpec{.name = "ID",
+              .type = FieldType::kInteger,
+              .min_value = 1,
+              .unit = "-",
+              .description = "node id",
+              .required = true},
+    FieldSpec{.name = "HEADING",
+              .type = FieldType::kText,
+              .width = 70,
+              .description = "a name for the node's history",
+              .rest_of_line = true},
+};
+constexpr std::array kHistoryCards{
+    CardSpec{.title = "Node cards",
+             .fields = kHistoryFields,
+             .presence = "without _ID: eight node ids per card, until the next keyword",
+             .numbering = FieldNumbering::kSequential},
+    CardSpec{.title = "Node cards (_ID)",
+             .fields = kHistoryIdFields,
+             .presence = "with _ID: one node per card, until the next keyword"},
+};
+
+void read_history_node(KeywordInput& in) {
+  model::DatabaseHistoryNodeDesc d;
+  d.where = in.keyword_where();
+  const bool with_id = in.option() == "ID";
+  int card = 0;
+  while (const auto line = in.next_nonblank_line()) {
+    if (with_id) {
+      const CardValues v = in.read(kHistoryCards[1], *line);
+      d.node_ids.push_back(v.integer("ID"));
+      d.headings.push_back(v.text("HEADING"));
+      d.ids_where.push_back(in.where(line->line));
+      continue;
+    }
+    const CardValues v = in.read(kHistoryCards[0], *line, card++);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (const int id = static_cast<int>(v.at(i).integer); id != 0) {
+        d.node_ids.push_back(id);
+        d.ids_where.push_back(in.where(line->line));
+      }
+    }
+  }
+  in.model().history_nodes.push_back(std::move(d));
+}
+
+}  // namespace
+
+KeywordSpec database_binary_d3plot_keyword() {
+  return {.name = "DATABASE_BINARY_D3PLOT",
+          .options = kNoOptions,
+          .handler = read_d3plot,
+          .cards = kD3plotCards,
+          .summary =
+              "The interval of full states (results_NNNN.vtu). Given twice, the last "
+              "one is used (with a warning)."};
+}
+
+KeywordSpec database_glstat_keyword() {
+  return {.name = "DATABASE_GLSTAT",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "GLSTAT"); },
+          .cards = kAsciiCards,
+          .summary = "The interval of glstat.csv (global energies)."};
+}
+
+KeywordSpec database_nodout_keyword() {
+  return {.name = "DATABASE_NODOUT",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "NODOUT"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of nodout.csv (the *DATABASE_HISTORY_NODE nodes). LS-DYNA's "
+              "further fields (DTHF, BINHF) are not read."};
+}
+
+KeywordSpec database_history_node_keyword() {
+  return {.name = "DATABASE_HISTORY_NODE",
+          .options = kNoneOrId,
+          .handler = read_history_node,
+          .cards = kHistoryCards,
+          .summary = "Nodes written to nodout.csv. _SET is not supported yet."};
+}
+
+}  // namespace plyform::keyword

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "plyform/model/source_location.hpp"
+
+namespace plyform::model {
+
+/// Whether a boundary condition or load names one node (_NODE) or a node set (_SET).
+enum class NodeTarget { kNode, kSet };
+
+/// One card of *BOUNDARY_SPC_NODE / *BOUNDARY_SPC_SET (_ID): fixed degrees of freedom.
+struct BoundarySpcDesc {
+  NodeTarget target = NodeTarget::kNode;
+  int target_id = 0;    ///< NID or NSID
+  int id = 0;           ///< ID of the _ID option (0 without it)
+  std::string heading;  ///< HEADING of the _ID option
+  int cid = 0;          ///< CID: must be 0 (local systems are not supported yet)
+  /// DOFX DOFY DOFZ DOFRX DOFRY DOFRZ: true = fixed.
+  std::array<bool, 6> fixed{};
+  SourceLocation where;  ///< the card line
+};
+
+/// One card of *BOUNDARY_PRESCRIBED_MOTION_NODE / _SET (_ID).
+struct PrescribedMotionDesc {
+  NodeTarget target = NodeTarget::kNode;
+  int target_id = 0;      ///< NID or NSID
+  int id = 0;             ///< ID of the _ID option (0 without it)
+  std::string heading;    ///< HEADING of the _ID option
+  int dof = 0;            ///< DOF, LS-DYNA's code: 1, 2, 3 = global x, y, z translation
+  int vad = 0;            ///< VAD: 0 velocity, 1 acceleration, 2 displacement
+  int curve_id = 0;       ///< LCID: the curve of the motion against time
+  double scale = 1.0;     ///< SF: ordinate scale factor of the curve
+  int vid = 0;            ///< VID: vector id (only DOF 4/8, not supported): must be 0
+  double death = 1.0e28;  ///< DEATH: time the motion ends, time units
+  double birth = 0.0;     ///< BIRTH: time the motion starts, time units
+  SourceLocation where;   ///< the card line
+};
+
+}  // namespace plyform::model

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <string>
+
+#include "plyform/model/source_location.hpp"
+
+namespace plyform::model {
+
+/// *CONTROL_TERMINATION.
+struct ControlTerminationDesc {
+  double end_time = 0.0;  ///< ENDTIM, time units
+  int end_cycle = 0;      ///< ENDCYC (0: no limit)
+  double dtmin = 0.0;     ///< DTMIN: stop when dt falls below DTMIN x initial dt
+  double endeng = 0.0;    ///< ENDENG: energy change limit, as written
+  double endmas = 0.0;    ///< ENDMAS: mass change limit (mass scaling), as written
+  int nosol = 0;          ///< NOSOL: 1 = read and check only
+  SourceLocation where;   ///< the card line
+};
+
+/// *CONTROL_TIMESTEP.
+struct ControlTimestepDesc {
+  double dtinit = 0.0;   ///< DTINIT: initial step (0: the solver chooses), time units
+  double tssfac = 0.9;   ///< TSSFAC: scale factor of the stable step (a written 0 is 0.9)
+  int isdo = 0;          ///< ISDO: shell characteristic length option, as written
+  double tslimt = 0.0;   ///< TSLIMT: shell minimum step, as written
+  double dt2ms = 0.0;    ///< DT2MS: mass scaling target step (negative: only added mass)
+  int lctm = 0;          ///< LCTM: curve of the maximum step; must be 0 for now
+  int erode = 0;         ///< ERODE, as written
+  int ms1st = 0;         ///< MS1ST, as written
+  SourceLocation where;  ///< the card line
+};
+
+/// *CONTROL_ENERGY: which energies are computed (1 no, 2 yes, as LS-DYNA).
+struct ControlEnergyDesc {
+  int hgen = 1;    ///< HGEN: hourglass energy
+  int rwen = 2;    ///< RWEN: rigid wall energy
+  int slnten = 1;  ///< SLNTEN: sliding interface energy
+  int rylen = 1;   ///< RYLEN: Rayleigh damping energy
+  int irgen = 2;   ///< IRGEN: initial reference geometry energy
+  SourceLocation where;
+};
+
+/// *CONTROL_HOURGLASS: the default hourglass control.
+struct ControlHourglassDesc {
+  int ihq = 1;      ///< IHQ: default hourglass type
+  double qh = 0.1;  ///< QH: default hourglass coefficient
+  SourceLocation where;
+};
+
+/// *CONTROL_UNITS: names of the deck's units, kept as text (no conversion).
+struct ControlUnitsDesc {
+  std::string length;  ///< LENGTH ("m", "mm", ...)
+  std::string time;    ///< TIME
+  std::string mass;    ///< MASS
+  std::string temp;    ///< TEMP
+  SourceLocation where;
+};
+
+}  // namespace plyform::model

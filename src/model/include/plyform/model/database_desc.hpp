@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "plyform/model/source_location.hpp"
+
+namespace plyform::model {
+
+/// *DATABASE_BINARY_D3PLOT: the interval of full states (results_NNNN.vtu).
+struct DatabaseBinaryD3plotDesc {
+  double dt = 0.0;      ///< DT: interval, time units
+  int lcdt = 0;         ///< LCDT: must be 0 (an interval curve is not supported yet)
+  int beam = 0;         ///< BEAM, as written
+  int npltc = 0;        ///< NPLTC: if > 0, DT = ENDTIM / NPLTC
+  int part_set_id = 0;  ///< PSETID: part set written (0: all)
+  SourceLocation where;
+};
+
+/// *DATABASE_GLSTAT / *DATABASE_NODOUT: an ASCII history file's interval.
+struct DatabaseAsciiDesc {
+  std::string name;  ///< "GLSTAT" or "NODOUT"
+  double dt = 0.0;   ///< DT: interval, time units
+  int binary = 0;    ///< BINARY: 0/1 ASCII, 2 binout, 3 both; plyform writes CSV always
+  int lcur = 0;      ///< LCUR: must be 0 (an interval curve is not supported yet)
+  int ioopt = 1;     ///< IOOPT, as written
+  SourceLocation where;
+};
+
+/// *DATABASE_HISTORY_NODE (_ID): nodes written to nodout.csv.
+struct DatabaseHistoryNodeDesc {
+  std::vector<int> node_ids;              ///< in deck order
+  std::vector<std::string> headings;      ///< _ID: the HEADING of each node; empty otherwise
+  std::vector<SourceLocation> ids_where;  ///< the card line of each node id
+  SourceLocation where;                   ///< the keyword line
+};
+
+}  // namespace plyform::model
