@@ -1,0 +1,43 @@
+#pragma once
+// OUTDIR/summary.json: the outcome of a run in one small JSON object, written atomically.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace plyform::output {
+
+/// What a run reports at its end. Doubles that are not finite are written as null.
+struct RunSummary {
+  std::string status = "normal termination";  ///< "normal termination" or "error: <message>"
+  std::string deck;                           ///< deck path as given on the command line
+  std::string version;                        ///< plyform version
+  long cycles = 0;                            ///< time steps taken
+  double final_time = 0.0;                    ///< simulated time reached (model time unit)
+  double end_time = 0.0;                      ///< termination time of the deck (model time unit)
+  double wall_seconds = 0.0;                  ///< wall-clock time of the time loop (s)
+  double element_cycles_per_second = 0.0;     ///< elements x cycles / wall_seconds (1/s)
+  double energy_ratio = 0.0;      ///< total / (initial total + external work) at the end
+  double dt_initial = 0.0;        ///< first time step (model time unit)
+  double dt_final = 0.0;          ///< last time step (model time unit)
+  double added_mass = 0.0;        ///< mass added by mass scaling at the end (model mass unit)
+  double added_mass_ratio = 0.0;  ///< added_mass / physical mass (dimensionless)
+  long nodes = 0;
+  long elements = 0;
+  int threads = 1;
+  std::vector<std::string> warnings;
+};
+
+/// The JSON text of a summary (an object, two-space indentation, ending with a newline).
+/// Strings are escaped per RFC 8259; invalid UTF-8 bytes become U+FFFD.
+[[nodiscard]] std::string summary_json_text(const RunSummary& summary);
+
+/// Writes `summary_json_text(summary)` to `file` (temporary file, then rename); throws
+/// std::runtime_error naming the file on failure.
+void write_summary_json(const std::filesystem::path& file, const RunSummary& summary);
+
+/// `text` as a JSON string literal, quotes included.
+[[nodiscard]] std::string json_string(std::string_view text);
+
+}  // namespace plyform::output
