@@ -85,7 +85,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadDeck{"missing required constant", "    3.0E-5", "          ",
                 "deck.k:12: *USER_INTERFACE_FRICTION: field UC7 (ETA): constant UC7 ETA is "
                 "required"},
-        BadDeck{"unsupported keyword", "*DEFINE_CURVE\n", "*NODE\n", "deck.k:6: *NODE"},
+        BadDeck{"unsupported keyword", "*DEFINE_CURVE\n", "*ELEMENT_BEAM\n",
+                "deck.k:6: *ELEMENT_BEAM"},
         BadDeck{"bad number", "     &smax", "      0.3x", "deck.k:12: *USER_INTERFACE_FRICTION"},
         BadDeck{"undefined parameter", "     &smax", "     &smox", "deck.k:12"},
         BadDeck{"duplicate curve id", "*USER_INTERFACE_FRICTION\n",

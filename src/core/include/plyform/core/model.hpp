@@ -1,0 +1,114 @@
+#pragma once
+// The runtime model: everything the engine needs, laid out in flat arrays with local indices.
+// Built once by setup::build from a ModelDesc; the engine never sees a string or a deck id in
+// its loop (ids are kept only to write results).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "plyform/core/load_curve.hpp"
+#include "plyform/core/material.hpp"
+#include "plyform/core/types.hpp"
+
+namespace plyform::core {
+
+/// Solid element formulations of *SECTION_SOLID.
+enum class SolidFormulation : int {
+  one_point = 1,          ///< ELFORM 1: constant stress, hourglass control
+  selective_reduced = 2,  ///< ELFORM 2: 2x2x2 Gauss, mean dilatation (selective reduced)
+};
+
+/// *HOURGLASS / *CONTROL_HOURGLASS for ELFORM 1.
+struct HourglassControl {
+  int ihq = 1;      ///< 1-3: viscous (Flanagan-Belytschko), 4-5: stiffness
+  double qm = 0.1;  ///< coefficient
+};
+
+/// Elements of one formulation and one material (and part), in blocks for the kernels.
+struct SolidBlock {
+  SolidFormulation formulation = SolidFormulation::one_point;
+  Index part = 0;      ///< index into Model::parts
+  Index material = 0;  ///< index into Model::materials
+  HourglassControl hourglass;
+  std::vector<GlobalId> element_id;
+  std::vector<Index> connectivity;  ///< 8 node indices per element, LS-DYNA order
+  [[nodiscard]] std::size_t size() const { return element_id.size(); }
+};
+
+struct Part {
+  GlobalId id = 0;
+  std::string title;
+  Index material = 0;
+};
+
+/// Degrees of freedom as bits: x, y, z translations (rotations come with shells).
+enum Dof : unsigned { dof_x = 1u, dof_y = 2u, dof_z = 4u };
+
+/// *BOUNDARY_SPC_NODE/_SET: fixed translations of one node.
+struct FixedDofs {
+  Index node = 0;
+  unsigned dofs = 0;  ///< Dof bits
+};
+
+enum class MotionKind : int { velocity = 0, acceleration = 1, displacement = 2 };
+
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET: one node, one translational direction.
+struct PrescribedMotion {
+  Index node = 0;
+  int direction = 0;  ///< 0, 1, 2
+  MotionKind kind = MotionKind::velocity;
+  Index curve = 0;  ///< index into Model::curves
+  double scale = 1.0;
+  double birth = 0.0;
+  double death = 1e28;
+};
+
+/// *LOAD_NODE_POINT/_SET: a force on one node in one direction.
+struct NodalLoad {
+  Index node = 0;
+  int direction = 0;
+  Index curve = 0;
+  double scale = 1.0;
+};
+
+struct Controls {
+  double end_time = 0.0;    ///< *CONTROL_TERMINATION ENDTIM
+  long end_cycle = 0;       ///< ENDCYC (0: none)
+  double dt_min_ratio = 0;  ///< DTMIN: stop when dt < DTMIN * dt0 (0: default 1e-3... see engine)
+  double tssfac = 0.9;      ///< *CONTROL_TIMESTEP
+  double dt2ms = 0.0;       ///< > 0: mass scaling to reach dt = |DT2MS| * TSSFAC
+  double dt_init = 0.0;
+  bool hourglass_energy = true;  ///< *CONTROL_ENERGY HGEN
+};
+
+struct OutputRequests {
+  double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
+  double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
+  double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none)
+  std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
+};
+
+struct Model {
+  std::string title;
+  // Nodes (reference configuration).
+  std::vector<GlobalId> node_id;
+  std::vector<double> x0, y0, z0;
+  // Elements, parts, materials.
+  std::vector<Part> parts;
+  std::vector<Material> materials;
+  std::vector<SolidBlock> solid_blocks;
+  // Loads and constraints.
+  std::vector<LoadCurve> curves;
+  std::vector<FixedDofs> fixed;
+  std::vector<PrescribedMotion> motions;
+  std::vector<NodalLoad> loads;
+  std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)
+  Controls controls;
+  OutputRequests output;
+
+  [[nodiscard]] std::size_t node_count() const { return node_id.size(); }
+  [[nodiscard]] std::size_t solid_count() const;
+};
+
+}  // namespace plyform::core

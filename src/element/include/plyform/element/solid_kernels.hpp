@@ -1,0 +1,58 @@
+#pragma once
+// Internal forces of 8-node solid elements, block by block: ELFORM 1 (one point, uniform
+// gradient, Flanagan-Belytschko hourglass control) and ELFORM 2 (2x2x2 Gauss, selective
+// reduced: deviatoric part at the points, volumetric part from the element mean).
+//
+// The kernel writes each element's 24 nodal forces to its own slots of `force`; the engine sums
+// them per node in a fixed order, so results do not depend on the number of threads.
+
+#include <cstddef>
+#include <vector>
+
+#include "plyform/core/model.hpp"
+
+namespace plyform::element {
+
+/// Nodal arrays the kernels read (all of length node_count).
+struct NodalView {
+  const double *x, *y, *z;     ///< current coordinates (t_{n+1})
+  const double *x0, *y0, *z0;  ///< reference coordinates
+  const double *vx, *vy, *vz;  ///< velocities (t_{n+1/2})
+};
+
+/// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx),
+/// stiffness-hourglass displacements per element, and the element force slots.
+struct SolidBlockState {
+  int points = 1;  ///< integration points per element
+  std::vector<double> s[6];
+  std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
+  std::vector<double> force;      ///< 24 per element: [e][node][xyz]
+  std::vector<double> volume;     ///< current volume per element
+
+  void resize(const core::SolidBlock& block);
+};
+
+/// What a kernel call reports for its element range.
+struct SolidResult {
+  double dt_min = 1e300;          ///< smallest stable step of the range (without TSSFAC)
+  std::size_t dt_element = 0;     ///< element (index in the block) that sets it
+  double hourglass_energy = 0.0;  ///< hourglass work of this cycle
+  bool failed = false;            ///< a non-positive volume or Jacobian
+  std::size_t failed_element = 0;
+};
+
+/// Updates stresses and element forces of elements [begin, end) of `block` for a step `dt`
+/// (the step from t_n to t_{n+1}; dt = 0 computes forces of the current stress only).
+/// `wave_speed` and `density` are those of the block's material.
+SolidResult solid_forces(const core::SolidBlock& block, const core::Material& material,
+                         SolidBlockState& state, const NodalView& nodes, double dt,
+                         std::size_t begin, std::size_t end);
+
+/// The stable step of element e alone (geometry and material), for reports.
+double solid_stable_dt(const core::SolidBlock& block, const core::Material& material,
+                       const NodalView& nodes, std::size_t e);
+
+/// Reference volume of element e.
+double solid_reference_volume(const core::SolidBlock& block, const NodalView& nodes, std::size_t e);
+
+}  // namespace plyform::element

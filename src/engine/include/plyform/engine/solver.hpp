@@ -1,0 +1,74 @@
+#pragma once
+// The explicit central-difference engine: lumped mass, stable step from the elements, large
+// deformation, boundary conditions, energies, output on schedule. It sees only the runtime
+// model (flat arrays, local indices) and reports through an OutputSink.
+
+#include <string>
+#include <vector>
+
+#include "plyform/core/model.hpp"
+#include "plyform/element/solid_kernels.hpp"
+#include "plyform/engine/nodal_state.hpp"
+
+namespace plyform::engine {
+
+/// Global energies at one time, as in LS-DYNA's glstat.
+struct Energies {
+  double time = 0.0;
+  double dt = 0.0;
+  double kinetic = 0.0;
+  double internal = 0.0;  ///< stress work, without hourglass
+  double hourglass = 0.0;
+  double contact = 0.0;
+  double external_work = 0.0;  ///< loads and reactions of constraints and prescribed motions
+  double total = 0.0;          ///< kinetic + internal + hourglass + contact
+  double ratio = 1.0;          ///< total / (initial total + external work)
+};
+
+/// What an output writer sees at an output time.
+struct Snapshot {
+  double time = 0.0;
+  long cycle = 0;
+  const core::Model* model = nullptr;
+  const NodalState* nodes = nullptr;
+  const std::vector<element::SolidBlockState>* solids = nullptr;
+};
+
+class OutputSink {
+ public:
+  virtual ~OutputSink() = default;
+  virtual void state(const Snapshot& s) = 0;   ///< at the d3plot interval, first and last
+  virtual void glstat(const Energies& e) = 0;  ///< at the glstat interval
+  virtual void nodout(const Snapshot& s) = 0;  ///< at the nodout interval
+  /// Every cycle (cheap: the sink throttles); wall seconds since the start.
+  virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
+                        double /*wall*/) {}
+};
+
+struct SolverOptions {
+  int threads = 1;
+  /// Stop when dt < this fraction of the first step (DTMIN of *CONTROL_TERMINATION overrides).
+  double dt_floor_ratio = 1e-4;
+};
+
+struct RunResult {
+  bool ok = true;
+  std::string error;  ///< the diagnosis when !ok (names the element or node and the time)
+  long cycles = 0;
+  double time = 0.0;
+  double wall_seconds = 0.0;
+  double element_cycles_per_second = 0.0;
+  double dt_first = 0.0;
+  double dt_last = 0.0;
+  double added_mass = 0.0;  ///< by mass scaling
+  double physical_mass = 0.0;
+  Energies last;
+  std::vector<std::string> warnings;
+};
+
+/// Runs the model to its termination time (or the first instability) and returns what
+/// happened. Output written through `sink` before a failure stays written; on a failure the
+/// last state is written too.
+RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& options);
+
+}  // namespace plyform::engine

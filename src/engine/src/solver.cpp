@@ -1,0 +1,353 @@
+#include "plyform/engine/solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "assembly.hpp"
+#include "boundary_conditions.hpp"
+#include "deterministic_sum.hpp"
+#include "mass.hpp"
+
+namespace plyform::engine {
+namespace {
+
+// A range of elements of one block: the unit of parallel work in the element loop.
+struct WorkItem {
+  std::size_t block, begin, end;
+};
+
+std::vector<WorkItem> make_work(const core::Model& model) {
+  constexpr std::size_t kItem = 256;
+  std::vector<WorkItem> w;
+  for (std::size_t b = 0; b < model.solid_blocks.size(); ++b) {
+    const std::size_t n = model.solid_blocks[b].size();
+    for (std::size_t e = 0; e < n; e += kItem)
+      w.push_back({b, e, std::min(n, e + kItem)});
+  }
+  return w;
+}
+
+struct InternalResult {
+  double dt_min = 1e300;
+  std::size_t dt_block = 0, dt_element = 0;
+  double hourglass = 0.0;
+  bool failed = false;
+  std::size_t failed_block = 0, failed_element = 0;
+};
+
+std::string time_text(double t) {
+  std::ostringstream os;
+  os.precision(6);
+  os << t;
+  return os.str();
+}
+
+}  // namespace
+
+RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& options) {
+#ifdef _OPENMP
+  omp_set_num_threads(std::max(1, options.threads));
+#endif
+  const auto wall_start = std::chrono::steady_clock::now();
+  const auto wall = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  };
+  RunResult res;
+  const std::size_t n = model.node_count();
+  NodalState s;
+  s.resize(n);
+  s.x = model.x0;
+  s.y = model.y0;
+  s.z = model.z0;
+  if (!model.v0x.empty()) {
+    s.vx = model.v0x;
+    s.vy = model.v0y;
+    s.vz = model.v0z;
+  }
+  const element::NodalView view{s.x.data(),      s.y.data(),      s.z.data(),
+                                model.x0.data(), model.y0.data(), model.z0.data(),
+                                s.vx.data(),     s.vy.data(),     s.vz.data()};
+  std::vector<element::SolidBlockState> solids(model.solid_blocks.size());
+  for (std::size_t b = 0; b < solids.size(); ++b)
+    solids[b].resize(model.solid_blocks[b]);
+
+  const MassResult mass = lumped_mass(model, view, s.mass);
+  res.physical_mass = mass.physical;
+  res.added_mass = mass.added;
+  std::vector<double> inv_mass(n, 0.0);
+  std::size_t massless = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.mass[i] > 0.0) {
+      inv_mass[i] = 1.0 / s.mass[i];
+    } else {
+      ++massless;
+    }
+  }
+  if (massless > 0) {
+    res.warnings.push_back(std::to_string(massless) +
+                           " nodes belong to no element: they carry no mass and do not move");
+  }
+
+  const ForceGather gather(model);
+  const BoundaryConditions bc(model);
+  const std::vector<WorkItem> work = make_work(model);
+  std::vector<element::SolidResult> item_results(work.size());
+  std::size_t element_count = model.solid_count();
+
+  const auto internal = [&](double dt) {
+#pragma omp parallel for schedule(dynamic, 4)
+    for (long w = 0; w < static_cast<long>(work.size()); ++w) {
+      const WorkItem& it = work[static_cast<std::size_t>(w)];
+      const core::SolidBlock& blk = model.solid_blocks[it.block];
+      item_results[static_cast<std::size_t>(w)] =
+          element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                                solids[it.block], view, dt, it.begin, it.end);
+    }
+    InternalResult r;
+    for (std::size_t w = 0; w < work.size(); ++w) {  // in order: deterministic
+      const element::SolidResult& x = item_results[w];
+      if (x.failed && !r.failed) {
+        r.failed = true;
+        r.failed_block = work[w].block;
+        r.failed_element = x.failed_element;
+      }
+      if (x.dt_min < r.dt_min) {
+        r.dt_min = x.dt_min;
+        r.dt_block = work[w].block;
+        r.dt_element = x.dt_element;
+      }
+      r.hourglass += x.hourglass_energy;
+    }
+    if (!r.failed)
+      gather.gather(solids, s.fx.data(), s.fy.data(), s.fz.data());
+    return r;
+  };
+  const auto element_name = [&](std::size_t b, std::size_t e) {
+    const core::SolidBlock& blk = model.solid_blocks[b];
+    return "solid element " + std::to_string(blk.element_id[e]) + " (part " +
+           std::to_string(model.parts[static_cast<std::size_t>(blk.part)].id) + ")";
+  };
+
+  double t = 0.0;
+  long cycle = 0;
+  const Snapshot snap{0.0, 0, &model, &s, &solids};
+  const auto snapshot = [&] {
+    Snapshot x = snap;
+    x.time = t;
+    x.cycle = cycle;
+    return x;
+  };
+  const auto fail = [&](const std::string& why) {
+    res.ok = false;
+    res.error = why;
+    sink.state(snapshot());  // keep the last state for the diagnosis
+  };
+
+  InternalResult ir = internal(0.0);
+  if (ir.failed) {
+    fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
+         " in the initial mesh");
+    return res;
+  }
+  if (element_count == 0 || !(ir.dt_min < 1e300)) {
+    res.ok = false;
+    res.error = "the model has no elements to integrate";
+    return res;
+  }
+  const double tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
+  double dt = tssfac * ir.dt_min;
+  if (model.controls.dt_init > 0.0)
+    dt = std::min(dt, model.controls.dt_init);
+  const double end_time = model.controls.end_time;
+  if (end_time > 0.0)
+    dt = std::min(dt, end_time);
+  res.dt_first = dt;
+  const double floor_ratio =
+      model.controls.dt_min_ratio > 0.0 ? model.controls.dt_min_ratio : options.dt_floor_ratio;
+  const double dt_floor = floor_ratio * dt;
+
+  bc.loads(0.0, s);
+  std::vector<double> old_x(n), old_y(n), old_z(n);
+  const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
+  const std::vector<unsigned char>& constrained = bc.constrained();
+
+  // Half-step velocity update with constraints and reactions (m a = f_ext - f_int + R).
+  const auto advance_velocity = [&](double t_now, double dt_next, double dt_avg) {
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      old_x[i] = s.vx[i];
+      old_y[i] = s.vy[i];
+      old_z[i] = s.vz[i];
+      s.vx[i] += (s.ex[i] - s.fx[i]) * inv_mass[i] * dt_avg;
+      s.vy[i] += (s.ey[i] - s.fy[i]) * inv_mass[i] * dt_avg;
+      s.vz[i] += (s.ez[i] - s.fz[i]) * inv_mass[i] * dt_avg;
+    }
+    bc.constrain(t_now, dt_next, dt_avg, old, s);
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      const unsigned char* c = &constrained[3 * i];
+      s.rx[i] = c[0] ? s.mass[i] * (s.vx[i] - old_x[i]) / dt_avg - (s.ex[i] - s.fx[i]) : 0.0;
+      s.ry[i] = c[1] ? s.mass[i] * (s.vy[i] - old_y[i]) / dt_avg - (s.ey[i] - s.fy[i]) : 0.0;
+      s.rz[i] = c[2] ? s.mass[i] * (s.vz[i] - old_z[i]) / dt_avg - (s.ez[i] - s.fz[i]) : 0.0;
+    }
+  };
+  const auto kinetic = [&] {
+    return 0.5 * deterministic_sum(n, [&](std::size_t i) {
+             return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]);
+           });
+  };
+
+  // t = 0: velocities at t_0 are the initial ones; the first half step is dt/2.
+  s.vnx = s.vx;
+  s.vny = s.vy;
+  s.vnz = s.vz;
+  advance_velocity(0.0, dt, 0.5 * dt);
+  const double kinetic0 = kinetic();
+  double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
+  double hourglass = 0.0;
+  double work_external = 0.0;
+  Energies en;
+  const auto energies = [&] {
+    en.time = t;
+    en.dt = dt;
+    en.kinetic = kinetic();
+    en.hourglass = hourglass;
+    en.internal = work_internal - hourglass;
+    en.external_work = work_external;
+    en.total = en.kinetic + en.internal + en.hourglass + en.contact;
+    const double reference = kinetic0 + work_external;
+    en.ratio = std::abs(reference) > 0.0 ? en.total / reference : 1.0;
+    return en;
+  };
+
+  const core::OutputRequests& out = model.output;
+  const double eps_t = 1e-9 * std::max(end_time, dt);
+  double next_state = out.d3plot_dt > 0.0 ? 0.0 : 0.0;
+  double next_glstat = 0.0, next_nodout = 0.0;
+  bool state_written = false;
+  const auto write_outputs = [&](bool last) {
+    state_written = false;
+    if (t + eps_t >= next_state || last) {
+      sink.state(snapshot());
+      state_written = true;
+      if (out.d3plot_dt > 0.0) {
+        while (next_state <= t + eps_t)
+          next_state += out.d3plot_dt;
+      } else {
+        next_state = end_time;  // first and last only
+      }
+    }
+    if (out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last)) {
+      sink.glstat(energies());
+      while (next_glstat <= t + eps_t)
+        next_glstat += out.glstat_dt;
+    }
+    if (out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last)) {
+      sink.nodout(snapshot());
+      while (next_nodout <= t + eps_t)
+        next_nodout += out.nodout_dt;
+    }
+  };
+  write_outputs(false);
+
+  const auto half_work = [&](const std::vector<double>& gx, const std::vector<double>& gy,
+                             const std::vector<double>& gz) {
+    return 0.5 * dt * deterministic_sum(n, [&](std::size_t i) {
+             return s.vx[i] * gx[i] + s.vy[i] * gy[i] + s.vz[i] * gz[i];
+           });
+  };
+
+  while (true) {
+    if (end_time > 0.0 && t + eps_t >= end_time)
+      break;
+    if (model.controls.end_cycle > 0 && cycle >= model.controls.end_cycle)
+      break;
+    // Work of the forces at t_n over the step (first half of the trapezoid).
+    work_internal += half_work(s.fx, s.fy, s.fz);
+    work_external += half_work(s.ex, s.ey, s.ez) + half_work(s.rx, s.ry, s.rz);
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      s.ux[i] += s.vx[i] * dt;
+      s.uy[i] += s.vy[i] * dt;
+      s.uz[i] += s.vz[i] * dt;
+      s.x[i] = model.x0[i] + s.ux[i];
+      s.y[i] = model.y0[i] + s.uy[i];
+      s.z[i] = model.z0[i] + s.uz[i];
+    }
+    t += dt;
+    ++cycle;
+
+    ir = internal(dt);
+    if (ir.failed) {
+      fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
+           " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+      break;
+    }
+    hourglass += ir.hourglass;
+    bc.loads(t, s);
+    work_internal += half_work(s.fx, s.fy, s.fz);
+    work_external += half_work(s.ex, s.ey, s.ez);
+
+    double dt_next = tssfac * ir.dt_min;
+    if (dt_next < dt_floor) {
+      fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
+           " at t = " + time_text(t) + ", set by " + element_name(ir.dt_block, ir.dt_element));
+      break;
+    }
+    if (end_time > 0.0 && t + dt_next > end_time)
+      dt_next = std::max(end_time - t, 1e-3 * dt_next);
+    const double dt_avg = 0.5 * (dt + dt_next);
+    advance_velocity(t, dt_next, dt_avg);
+    // Second half of the reaction work over the step just taken.
+    work_external += 0.5 * dt * deterministic_sum(n, [&](std::size_t i) {
+                       return old_x[i] * s.rx[i] + old_y[i] * s.ry[i] + old_z[i] * s.rz[i];
+                     });
+    // Velocities at t_{n+1}: half of the step's acceleration on top of v_{n+1/2}.
+    const double w = dt / (2.0 * dt_avg);
+    std::size_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w;
+      s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w;
+      s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w;
+      if (!std::isfinite(s.vx[i] + s.vy[i] + s.vz[i]))
+        bad = std::min(bad, i);
+    }
+    if (bad < n) {
+      fail("non-finite velocity at node " + std::to_string(model.node_id[bad]) +
+           " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+      break;
+    }
+    res.dt_last = dt;
+    dt = dt_next;
+    write_outputs(false);
+    sink.progress(t, end_time, cycle, dt, wall());
+  }
+  if (res.ok && !state_written)
+    write_outputs(true);
+  if (res.ok) {
+    if (out.glstat_dt > 0.0 && en.time != t)
+      sink.glstat(energies());
+  }
+  res.cycles = cycle;
+  res.time = t;
+  res.wall_seconds = wall();
+  res.last = energies();
+  if (res.wall_seconds > 0.0) {
+    res.element_cycles_per_second =
+        static_cast<double>(element_count) * static_cast<double>(cycle) / res.wall_seconds;
+  }
+  return res;
+}
+
+}  // namespace plyform::engine

@@ -1,0 +1,30 @@
+#pragma once
+// An OutputSink for tests: keeps what the engine reports in memory.
+
+#include <functional>
+#include <vector>
+
+#include "plyform/engine/solver.hpp"
+
+namespace plyform::test {
+
+struct RecordingSink : engine::OutputSink {
+  std::vector<engine::Energies> energies;
+  std::vector<double> state_times;
+  /// Called at every state and every nodout time with the snapshot (for custom probes).
+  std::function<void(const engine::Snapshot&)> on_state;
+  std::function<void(const engine::Snapshot&)> on_nodout;
+
+  void state(const engine::Snapshot& s) override {
+    state_times.push_back(s.time);
+    if (on_state)
+      on_state(s);
+  }
+  void glstat(const engine::Energies& e) override { energies.push_back(e); }
+  void nodout(const engine::Snapshot& s) override {
+    if (on_nodout)
+      on_nodout(s);
+  }
+};
+
+}  // namespace plyform::test
