@@ -11,6 +11,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "plyform 0.1.0");
 
+  plyform::app::RunOptions run;
+  std::filesystem::path run_output;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a deck with the explicit solver");
+  run_cmd->add_option("DECK", run.deck, "keyword deck (.k)")->required();
+  auto* run_out =
+      run_cmd->add_option("-o,--output", run_output, "results folder (default: <deck stem>_out)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+
   std::filesystem::path check_deck;
   CLI::App* check = app.add_subcommand("check", "Read and validate a deck; print a summary");
   check->add_option("DECK", check_deck, "keyword deck (.k)")->required();
@@ -33,6 +41,11 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
 
+  if (run_cmd->parsed()) {
+    if (*run_out)
+      run.output = run_output;
+    return plyform::app::run_deck(run, std::cout, std::cerr);
+  }
   if (check->parsed())
     return plyform::app::run_check(check_deck, std::cout, std::cerr);
   if (law_cmd->parsed()) {

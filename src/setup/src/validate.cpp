@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "plyform/setup/cohesive_law.hpp"
+#include "plyform/setup/validate_mesh.hpp"
 
 namespace plyform::setup {
 
@@ -16,7 +17,7 @@ std::string at(const model::SourceLocation& w) {
 }  // namespace
 
 std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
-  std::vector<keyword::Diagnostic> errors;
+  std::vector<keyword::Diagnostic> errors = validate_mesh(model);
 
   std::unordered_map<int, const model::CurveDesc*> curves;
   for (const model::CurveDesc& c : model.curves) {

@@ -19,6 +19,17 @@ struct LawOptions {
 /// `plyform law DECK.k --path PATH.csv [-o OUT.csv] [--penalty K] [--interface ID]`
 int run_law(const LawOptions& options, std::ostream& out, std::ostream& err);
 
+struct RunOptions {
+  std::filesystem::path deck;
+  std::optional<std::filesystem::path> output;  ///< none: <deck stem>_out in the current folder
+  int threads = 1;
+  bool progress = true;  ///< a progress line when standard output is a terminal
+};
+
+/// `plyform run DECK.k [-o OUTDIR] [--threads N]`: 0 normal termination, 1 deck errors,
+/// 2 output errors, 3 the run stopped (instability), with the results written so far.
+int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
+
 /// `plyform check DECK.k`
 int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err);
 

@@ -1,0 +1,45 @@
+#pragma once
+// The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
+// glstat.csv, nodout.csv and the progress line, in OUTDIR.
+
+#include <filesystem>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "plyform/engine/solver.hpp"
+#include "plyform/output/csv_history.hpp"
+#include "plyform/output/progress_line.hpp"
+#include "plyform/output/vtu_series.hpp"
+
+namespace plyform::app {
+
+class ResultWriter : public engine::OutputSink {
+ public:
+  ResultWriter(const core::Model& model, const std::filesystem::path& outdir,
+               std::ostream& terminal, bool show_progress);
+
+  void state(const engine::Snapshot& s) override;
+  void glstat(const engine::Energies& e) override;
+  void nodout(const engine::Snapshot& s) override;
+  void progress(double time, double end_time, long cycle, double dt, double wall) override;
+  void finish();
+
+  [[nodiscard]] std::size_t states_written() const { return series_.states_written(); }
+
+ private:
+  const core::Model& model_;
+  output::VtuSeries series_;
+  std::optional<output::GlstatFile> glstat_;
+  std::optional<output::NodoutFile> nodout_;
+  output::ProgressLine progress_;
+  // The parts of every state that do not change: cells and ids.
+  std::vector<std::int64_t> connectivity_, offsets_, node_ids_, element_ids_, part_ids_;
+  std::vector<std::uint8_t> cell_types_;
+  // Per-state buffers, reused.
+  std::vector<double> displacement_, velocity_, temperature_, stress_, plastic_strain_;
+  std::vector<output::NodoutRow> rows_;
+};
+
+}  // namespace plyform::app

@@ -1,0 +1,106 @@
+// `plyform run`: deck -> validation -> runtime model -> explicit engine -> results in OUTDIR.
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <exception>
+#include <iostream>
+#include <ostream>
+
+#include "plyform/app/commands.hpp"
+#include "plyform/engine/solver.hpp"
+#include "plyform/keyword/read_deck.hpp"
+#include "plyform/output/progress_line.hpp"
+#include "plyform/output/summary_json.hpp"
+#include "plyform/setup/build.hpp"
+#include "plyform/setup/validate.hpp"
+#include "result_writer.hpp"
+
+namespace plyform::app {
+namespace {
+
+bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
+  for (const auto& d : errors)
+    fmt::print(err, "error: {}\n", d.to_string());
+  return !errors.empty();
+}
+
+}  // namespace
+
+int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  const keyword::ReadResult read = keyword::read_deck(options.deck);
+  for (const auto& w : read.warnings)
+    fmt::print(err, "warning: {}\n", w.to_string());
+  if (report(read.errors, err) || report(setup::validate(read.model), err))
+    return 1;
+  setup::BuildResult built = setup::build(read.model);
+  for (const auto& w : built.warnings)
+    fmt::print(err, "warning: {}\n", w.to_string());
+  if (report(built.errors, err))
+    return 1;
+  const core::Model& model = *built.model;
+
+  const std::filesystem::path outdir =
+      options.output ? *options.output
+                     : std::filesystem::current_path() / (options.deck.stem().string() + "_out");
+  output::RunSummary summary;
+  summary.deck = options.deck.string();
+  summary.version = "0.1.0";
+  summary.end_time = model.controls.end_time;
+  summary.nodes = static_cast<long>(model.node_count());
+  summary.elements = static_cast<long>(model.solid_count());
+  summary.threads = options.threads;
+  engine::RunResult result;
+  try {
+    std::filesystem::create_directories(outdir);
+    ResultWriter writer(model, outdir, std::cout, options.progress && output::stdout_is_terminal());
+    engine::SolverOptions so;
+    so.threads = options.threads;
+    result = engine::run(model, writer, so);
+    writer.finish();
+  } catch (const std::exception& e) {
+    fmt::print(err, "error: {}\n", e.what());
+    summary.status = std::string("error: ") + e.what();
+    output::write_summary_json(outdir / "summary.json", summary);
+    return 2;
+  }
+  summary.status = result.ok ? "normal termination" : "error: " + result.error;
+  summary.cycles = result.cycles;
+  summary.final_time = result.time;
+  summary.wall_seconds = result.wall_seconds;
+  summary.element_cycles_per_second = result.element_cycles_per_second;
+  summary.energy_ratio = result.last.ratio;
+  summary.dt_initial = result.dt_first;
+  summary.dt_final = result.dt_last;
+  summary.added_mass = result.added_mass;
+  summary.added_mass_ratio =
+      result.physical_mass > 0.0 ? result.added_mass / result.physical_mass : 0.0;
+  summary.warnings = result.warnings;
+  output::write_summary_json(outdir / "summary.json", summary);
+
+  for (const auto& w : result.warnings)
+    fmt::print(err, "warning: {}\n", w);
+  fmt::print(out,
+             "{}: {} cycles to t = {:.6g} in {:.3g} s wall ({:.3g} M element-cycles/s, "
+             "{} thread{})\n",
+             summary.status, result.cycles, result.time, result.wall_seconds,
+             result.element_cycles_per_second * 1e-6, options.threads,
+             options.threads == 1 ? "" : "s");
+  fmt::print(out,
+             "energies at the end: kinetic {:.6g}, internal {:.6g}, hourglass {:.6g}, external "
+             "work {:.6g}, ratio {:.6f}\n",
+             result.last.kinetic, result.last.internal, result.last.hourglass,
+             result.last.external_work, result.last.ratio);
+  if (result.added_mass > 0.0) {
+    fmt::print(out, "mass scaling added {:.6g} ({:.3g} % of {:.6g})\n", result.added_mass,
+               100.0 * summary.added_mass_ratio, result.physical_mass);
+  }
+  fmt::print(out, "results in {}\n", outdir.string());
+  if (!result.ok) {
+    fmt::print(err, "error: {}\n", result.error);
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace plyform::app
