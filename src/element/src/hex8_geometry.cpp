@@ -21,51 +21,6 @@ void natural_gradients(const double p[3], double dn[8][3]) {
 
 constexpr double kGauss = 0.57735026918962576451;  // 1/sqrt(3)
 
-// The non-zero terms of the volume form: for each node I, the pairs J < K with C_IJK != 0.
-struct VolumeTerm {
-  int j, k;
-  double c;
-};
-struct VolumeTable {
-  std::vector<VolumeTerm> terms[8];
-};
-
-VolumeTable make_volume_table() {
-  // C_IJK = integral over the cube of det[grad N_I; grad N_J; grad N_K]; the integrand is at
-  // most cubic in each natural coordinate, so 2x2x2 Gauss is exact.
-  double c[8][8][8] = {};
-  for (int q = 0; q < 8; ++q) {
-    const double p[3] = {kGauss * kHexNodeXi[q][0], kGauss * kHexNodeXi[q][1],
-                         kGauss * kHexNodeXi[q][2]};
-    double dn[8][3];
-    natural_gradients(p, dn);
-    for (int i = 0; i < 8; ++i)
-      for (int j = 0; j < 8; ++j)
-        for (int k = 0; k < 8; ++k) {
-          const double* a = dn[i];
-          const double* b = dn[j];
-          const double* d = dn[k];
-          c[i][j][k] += a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
-                        a[2] * (b[0] * d[1] - b[1] * d[0]);
-        }
-  }
-  VolumeTable t;
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 8; ++j)
-      for (int k = j + 1; k < 8; ++k) {
-        // Entries are multiples of 1/12; round off the quadrature noise.
-        const double v = std::round(c[i][j][k] * 12.0) / 12.0;
-        if (v != 0.0)
-          t.terms[i].push_back({j, k, v});
-      }
-  return t;
-}
-
-const VolumeTable& volume_table() {
-  static const VolumeTable table = make_volume_table();
-  return table;
-}
-
 }  // namespace
 
 bool uniform_gradient(const HexCoords& c, UniformGradient& out) {
@@ -76,53 +31,36 @@ bool uniform_gradient(const HexCoords& c, UniformGradient& out) {
     y[i] = c.y[i] - c.y[0];
     z[i] = c.z[i] - c.z[0];
   }
-  // Cross products r_J x r_K for all pairs (28), then gradients from the table.
-  double px[8][8], py[8][8], pz[8][8];
-  for (int j = 0; j < 8; ++j)
-    for (int k = j + 1; k < 8; ++k) {
-      px[j][k] = y[j] * z[k] - z[j] * y[k];
-      py[j][k] = z[j] * x[k] - x[j] * z[k];
-      pz[j][k] = x[j] * y[k] - y[j] * x[k];
-    }
-  const VolumeTable& t = volume_table();
-  double volume = 0.0;
-  for (int i = 0; i < 8; ++i) {
-    double gx = 0.0, gy = 0.0, gz = 0.0;
-    for (const VolumeTerm& term : t.terms[i]) {
-      gx += term.c * px[term.j][term.k];
-      gy += term.c * py[term.j][term.k];
-      gz += term.c * pz[term.j][term.k];
-    }
-    out.bx[i] = gx;
-    out.by[i] = gy;
-    out.bz[i] = gz;
-    volume += x[i] * gx;  // V is linear in the x coordinates: V = sum x_I dV/dx_I
-  }
-  out.volume = volume;
-  if (!(volume > 0.0))
+  double* gx = out.bx;
+  double* gy = out.by;
+  double* gz = out.bz;
+  // 12 dV/dx_I written out from the exact volume form (scripts/gen_hex8_volume_gradient.py).
+#define X(j) x[j]
+#define Y(j) y[j]
+#define Z(j) z[j]
+#define GX(i) gx[i]
+#define GY(i) gy[i]
+#define GZ(i) gz[i]
+#include "hex8_volume_gradient.inc"
+#undef X
+#undef Y
+#undef Z
+#undef GX
+#undef GY
+#undef GZ
+  double volume12 = 0.0;
+  for (int i = 0; i < 8; ++i)
+    volume12 += x[i] * gx[i];  // V is linear in the x coordinates
+  out.volume = volume12 / 12.0;
+  if (!(volume12 > 0.0))
     return false;
-  const double inv = 1.0 / volume;
+  const double inv = 1.0 / volume12;
   for (int i = 0; i < 8; ++i) {
-    out.bx[i] *= inv;
-    out.by[i] *= inv;
-    out.bz[i] *= inv;
+    gx[i] *= inv;
+    gy[i] *= inv;
+    gz[i] *= inv;
   }
   return true;
-}
-
-const std::array<std::array<double, 8>, 4>& hourglass_base() {
-  static const std::array<std::array<double, 8>, 4> h = [] {
-    std::array<std::array<double, 8>, 4> v{};
-    for (int i = 0; i < 8; ++i) {
-      const double* n = kHexNodeXi[i];
-      v[0][i] = n[1] * n[2];
-      v[1][i] = n[2] * n[0];
-      v[2][i] = n[0] * n[1];
-      v[3][i] = n[0] * n[1] * n[2];
-    }
-    return v;
-  }();
-  return h;
 }
 
 double characteristic_length(const UniformGradient& g) {

@@ -98,116 +98,250 @@ inline double det3(const double* f) {
          f[2] * (f[3] * f[7] - f[4] * f[6]);
 }
 
+// ELFORM 1, written lane-wise: each stage is a loop over the kLanes elements of a chunk with
+// fixed-size inner loops, so the compiler vectorises across elements (structure of arrays).
+constexpr std::size_t kLanes = 16;
+
+using Lanes = double[kLanes];
+using NodeLanes = double[8][kLanes];
+
+// Flanagan-Belytschko hourglass forces of a chunk, lane-wise: gamma_a = h_a - (h_a . x) b is
+// orthogonal to the linear velocity fields, so q = v . gamma = v . h_a - (h_a . x) . L picks
+// out the hourglass modes only. Length scales from the gradient (exact for a cube):
+// V^(2/3) ~ V sqrt(2 sum|b|^2 / 3) for the viscous form, V^(1/3) ~ (2/3) V sum|b|^2 for the
+// stiffness form. `scale` is QM rho c (viscous) or QM (K + 4/3 G) (stiffness).
+template <bool kStiffness>
+void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLanes& Y,
+                      const NodeLanes& Z, const NodeLanes& VX, const NodeLanes& VY,
+                      const NodeLanes& VZ, const NodeLanes& BX, const NodeLanes& BY,
+                      const NodeLanes& BZ, const double (&L)[9][kLanes], const Lanes& vol,
+                      const Lanes& bsq, double (&HG)[12][kLanes], double (&F)[3][8][kLanes],
+                      Lanes& power) {
+  // Loops are ordered with the lane index innermost, so each one vectorises across elements.
+  alignas(64) double coeff[kLanes], hx[kLanes], hy[kLanes], hz[kLanes];
+  alignas(64) double q[3][kLanes], r[3][kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    coeff[k] = kStiffness ? 0.25 * scale * (2.0 / 3.0) * vol[k] * bsq[k]
+                          : 0.25 * scale * vol[k] * std::sqrt(2.0 * bsq[k] / 3.0);
+    power[k] = 0.0;
+  }
+  for (int a = 0; a < 4; ++a) {
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      hx[k] = hy[k] = hz[k] = q[0][k] = q[1][k] = q[2][k] = 0.0;
+    }
+    for (int i = 0; i < 8; ++i) {
+      const double ha = kHourglass[a][i];
+      for (std::size_t k = 0; k < kLanes; ++k) {
+        hx[k] += ha * X[i][k];
+        hy[k] += ha * Y[i][k];
+        hz[k] += ha * Z[i][k];
+        q[0][k] += ha * VX[i][k];
+        q[1][k] += ha * VY[i][k];
+        q[2][k] += ha * VZ[i][k];
+      }
+    }
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      double pw = 0.0;
+      for (int d = 0; d < 3; ++d) {
+        const double qd =
+            q[d][k] - (hx[k] * L[3 * d][k] + hy[k] * L[3 * d + 1][k] + hz[k] * L[3 * d + 2][k]);
+        double rd;
+        if constexpr (kStiffness) {
+          HG[3 * a + d][k] += qd * dt;
+          rd = coeff[k] * HG[3 * a + d][k];
+        } else {
+          rd = coeff[k] * qd;
+        }
+        r[d][k] = rd;
+        pw += rd * qd;
+      }
+      power[k] += pw;
+    }
+    for (int i = 0; i < 8; ++i) {
+      const double ha = kHourglass[a][i];
+      for (std::size_t k = 0; k < kLanes; ++k) {
+        const double g = ha - (hx[k] * BX[i][k] + hy[k] * BY[i][k] + hz[k] * BZ[i][k]);
+        F[0][i][k] += r[0][k] * g;
+        F[1][i][k] += r[1][k] * g;
+        F[2][i][k] += r[2][k] * g;
+      }
+    }
+  }
+}
+
 template <class M>
 SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockState& st,
                       const NodalView& nv, double dt, std::size_t begin, std::size_t end) {
   SolidResult r;
   constexpr bool kTotal = std::is_same_v<M, MooneyRivlinMaterial>;
   const double c_wave = material::dilatational_wave_speed(core::Material{mat});
+  const double inv_c = 1.0 / c_wave;
   const double rho = mat.density;
   const double modulus = rho * c_wave * c_wave;  // K + 4/3 G
-  const auto& h = hourglass_base();
-  const int ihq = block.hourglass.ihq;
   const double qm = block.hourglass.qm;
-  const bool stiffness_hg = ihq == 4 || ihq == 5;
+  const bool stiffness_hg = block.hourglass.ihq == 4 || block.hourglass.ihq == 5;
+  const core::Index* conn = block.connectivity.data();
 
-  UniformGradient g[kChunk];
-  HexCoords cur[kChunk];
-  double vel[kChunk][3][8];
+  alignas(64) double X[8][kLanes], Y[8][kLanes], Z[8][kLanes];
+  alignas(64) double VX[8][kLanes], VY[8][kLanes], VZ[8][kLanes];
+  alignas(64) double BX[8][kLanes], BY[8][kLanes], BZ[8][kLanes];
+  alignas(64) double F[3][8][kLanes];
+  alignas(64) double L[9][kLanes], S[6][kLanes], HG[12][kLanes];
+  alignas(64) double vol[kLanes], bsq[kLanes], power[kLanes];
   PointScratch s;
-  for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
-    const std::size_t n = std::min(kChunk, end - c0);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t e = c0 + k;
-      gather(block, e, nv.x, nv.y, nv.z, cur[k]);
-      HexCoords v;
-      gather(block, e, nv.vx, nv.vy, nv.vz, v);
+
+  for (std::size_t c0 = begin; c0 < end; c0 += kLanes) {
+    const std::size_t n = std::min(kLanes, end - c0);
+    // Gather (padding lanes repeat the first element, their results are dropped).
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      const core::Index* e = conn + 8 * (c0 + (k < n ? k : 0));
       for (int i = 0; i < 8; ++i) {
-        vel[k][0][i] = v.x[i];
-        vel[k][1][i] = v.y[i];
-        vel[k][2][i] = v.z[i];
+        const auto node = static_cast<std::size_t>(e[i]);
+        X[i][k] = nv.x[node];
+        Y[i][k] = nv.y[node];
+        Z[i][k] = nv.z[node];
+        VX[i][k] = nv.vx[node];
+        VY[i][k] = nv.vy[node];
+        VZ[i][k] = nv.vz[node];
       }
-      if (!uniform_gradient(cur[k], g[k])) {
+    }
+    // Coordinates relative to node 1 (the hourglass vectors sum to zero, so h . x is unchanged).
+    for (int i = 7; i >= 0; --i)
+      for (std::size_t k = 0; k < kLanes; ++k) {
+        X[i][k] -= X[0][k];
+        Y[i][k] -= Y[0][k];
+        Z[i][k] -= Z[0][k];
+      }
+    for (std::size_t k = 0; k < kLanes; ++k) {
+#define X(j) X[j][k]
+#define Y(j) Y[j][k]
+#define Z(j) Z[j][k]
+#define GX(i) BX[i][k]
+#define GY(i) BY[i][k]
+#define GZ(i) BZ[i][k]
+#include "hex8_volume_gradient.inc"
+#undef X
+#undef Y
+#undef Z
+#undef GX
+#undef GY
+#undef GZ
+    }
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      double v12 = 0.0;
+      for (int i = 0; i < 8; ++i)
+        v12 += X[i][k] * BX[i][k];
+      vol[k] = v12 / 12.0;
+      const double inv = 1.0 / v12;  // a non-positive volume is reported below
+      double sum = 0.0;
+      for (int i = 0; i < 8; ++i) {
+        BX[i][k] *= inv;
+        BY[i][k] *= inv;
+        BZ[i][k] *= inv;
+        sum += BX[i][k] * BX[i][k] + BY[i][k] * BY[i][k] + BZ[i][k] * BZ[i][k];
+      }
+      bsq[k] = sum;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!(vol[k] > 0.0)) {
         r.failed = true;
-        r.failed_element = e;
+        r.failed_element = c0 + k;
         return r;
       }
-      st.volume[e] = g[k].volume;
-      rates(vel[k][0], vel[k][1], vel[k][2], g[k].bx, g[k].by, g[k].bz, s, k);
-      if constexpr (kTotal) {
-        HexCoords ref;
-        gather(block, e, nv.x0, nv.y0, nv.z0, ref);
+      st.volume[c0 + k] = vol[k];
+      // Stable step: L = 1 / sqrt(2 sum |b|^2) (see characteristic_length).
+      const double dte = inv_c / std::sqrt(2.0 * bsq[k]);
+      if (dte < r.dt_min) {
+        r.dt_min = dte;
+        r.dt_element = c0 + k;
+      }
+    }
+    // Velocity gradient L_ij = sum_I v_iI b_jI; D and W for the material.
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      double l[9] = {};
+      for (int i = 0; i < 8; ++i) {
+        l[0] += VX[i][k] * BX[i][k];
+        l[1] += VX[i][k] * BY[i][k];
+        l[2] += VX[i][k] * BZ[i][k];
+        l[3] += VY[i][k] * BX[i][k];
+        l[4] += VY[i][k] * BY[i][k];
+        l[5] += VY[i][k] * BZ[i][k];
+        l[6] += VZ[i][k] * BX[i][k];
+        l[7] += VZ[i][k] * BY[i][k];
+        l[8] += VZ[i][k] * BZ[i][k];
+      }
+      for (int j = 0; j < 9; ++j)
+        L[j][k] = l[j];
+      s.d[0][k] = l[0];
+      s.d[1][k] = l[4];
+      s.d[2][k] = l[8];
+      s.d[3][k] = 0.5 * (l[1] + l[3]);
+      s.d[4][k] = 0.5 * (l[5] + l[7]);
+      s.d[5][k] = 0.5 * (l[6] + l[2]);
+      s.w[0][k] = 0.5 * (l[1] - l[3]);
+      s.w[1][k] = 0.5 * (l[5] - l[7]);
+      s.w[2][k] = 0.5 * (l[6] - l[2]);
+    }
+    if constexpr (kTotal) {
+      // F = sum_I x_I (x) b0_I with the uniform gradient of the reference configuration.
+      for (std::size_t k = 0; k < n; ++k) {
+        HexCoords ref, cur;
+        gather(block, c0 + k, nv.x0, nv.y0, nv.z0, ref);
         UniformGradient g0;
         if (!uniform_gradient(ref, g0)) {
           r.failed = true;
-          r.failed_element = e;
+          r.failed_element = c0 + k;
           return r;
         }
-        deformation_gradient(cur[k], g0.bx, g0.by, g0.bz, s, k);
-      }
-      const double dte = characteristic_length(g[k]) / c_wave;
-      if (dte < r.dt_min) {
-        r.dt_min = dte;
-        r.dt_element = e;
+        for (int i = 0; i < 8; ++i) {
+          cur.x[i] = X[i][k];
+          cur.y[i] = Y[i][k];
+          cur.z[i] = Z[i][k];
+        }
+        deformation_gradient(cur, g0.bx, g0.by, g0.bz, s, k);
       }
     }
     update_material(mat, n, s, dt, st, c0);
 
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t e = c0 + k;
-      const UniformGradient& b = g[k];
-      const double sxx = st.s[0][e], syy = st.s[1][e], szz = st.s[2][e];
-      const double sxy = st.s[3][e], syz = st.s[4][e], szx = st.s[5][e];
-      double* f = &st.force[24 * e];
-      const double vol = b.volume;
+    for (int c = 0; c < 6; ++c)
+      for (std::size_t k = 0; k < kLanes; ++k)
+        S[c][k] = k < n ? st.s[c][c0 + k] : 0.0;
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      const double v = vol[k];
       for (int i = 0; i < 8; ++i) {
-        f[3 * i + 0] = vol * (sxx * b.bx[i] + sxy * b.by[i] + szx * b.bz[i]);
-        f[3 * i + 1] = vol * (sxy * b.bx[i] + syy * b.by[i] + syz * b.bz[i]);
-        f[3 * i + 2] = vol * (szx * b.bx[i] + syz * b.by[i] + szz * b.bz[i]);
+        F[0][i][k] = v * (S[0][k] * BX[i][k] + S[3][k] * BY[i][k] + S[5][k] * BZ[i][k]);
+        F[1][i][k] = v * (S[3][k] * BX[i][k] + S[1][k] * BY[i][k] + S[4][k] * BZ[i][k]);
+        F[2][i][k] = v * (S[5][k] * BX[i][k] + S[4][k] * BY[i][k] + S[2][k] * BZ[i][k]);
       }
-      if (qm <= 0.0)
-        continue;
-      // Flanagan-Belytschko hourglass: gamma_a = h_a - (h_a . x) b, orthogonal to the linear
-      // velocity fields, so it resists only the hourglass modes.
-      const HexCoords& xc = cur[k];
-      double hg_coeff;
+      power[k] = 0.0;
+    }
+    if (qm > 0.0) {
       if (stiffness_hg) {
-        hg_coeff = qm * modulus * std::cbrt(vol) * 0.25;
+        for (std::size_t k = 0; k < kLanes; ++k)
+          for (int j = 0; j < 12; ++j)
+            HG[j][k] = k < n ? st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] : 0.0;
+      }
+      if (stiffness_hg) {
+        hourglass_forces<true>(qm * modulus, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq, HG,
+                               F, power);
       } else {
-        hg_coeff = qm * rho * c_wave * std::cbrt(vol * vol) * 0.25;
+        hourglass_forces<false>(qm * rho * c_wave, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq,
+                                HG, F, power);
       }
-      double power = 0.0;
-      for (int a = 0; a < 4; ++a) {
-        double hx = 0.0, hy = 0.0, hz = 0.0;
-        for (int i = 0; i < 8; ++i) {
-          hx += h[a][i] * xc.x[i];
-          hy += h[a][i] * xc.y[i];
-          hz += h[a][i] * xc.z[i];
-        }
-        double gamma[8];
-        for (int i = 0; i < 8; ++i)
-          gamma[i] = h[a][i] - (hx * b.bx[i] + hy * b.by[i] + hz * b.bz[i]);
-        double q[3] = {0.0, 0.0, 0.0};
-        for (int d = 0; d < 3; ++d)
-          for (int i = 0; i < 8; ++i)
-            q[d] += vel[k][d][i] * gamma[i];
-        double res[3];
-        if (stiffness_hg) {
-          double* sh = &st.hourglass[12 * e + 3 * static_cast<std::size_t>(a)];
-          for (int d = 0; d < 3; ++d) {
-            sh[d] += q[d] * dt;
-            res[d] = hg_coeff * sh[d];
-          }
-        } else {
-          for (int d = 0; d < 3; ++d)
-            res[d] = hg_coeff * q[d];
-        }
-        for (int i = 0; i < 8; ++i)
-          for (int d = 0; d < 3; ++d)
-            f[3 * i + d] += res[d] * gamma[i];
-        power += res[0] * q[0] + res[1] * q[1] + res[2] * q[2];
+      if (stiffness_hg) {
+        for (std::size_t k = 0; k < n; ++k)
+          for (int j = 0; j < 12; ++j)
+            st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] = HG[j][k];
       }
-      r.hourglass_energy += power * dt;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double* f = &st.force[24 * (c0 + k)];
+      for (int i = 0; i < 8; ++i) {
+        f[3 * i + 0] = F[0][i][k];
+        f[3 * i + 1] = F[1][i][k];
+        f[3 * i + 2] = F[2][i][k];
+      }
+      r.hourglass_energy += power[k] * dt;
     }
   }
   return r;

@@ -28,9 +28,12 @@ struct UniformGradient {
 /// Returns false (and leaves `out` with the raw volume) when the volume is not positive.
 bool uniform_gradient(const HexCoords& c, UniformGradient& out);
 
-/// The four hourglass base vectors of Flanagan-Belytschko (eta zeta, zeta xi, xi eta,
-/// xi eta zeta at the nodes).
-const std::array<std::array<double, 8>, 4>& hourglass_base();
+/// The four hourglass base vectors of Flanagan-Belytschko: eta zeta, zeta xi, xi eta and
+/// xi eta zeta at the nodes.
+inline constexpr double kHourglass[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                            {1, -1, -1, 1, -1, 1, 1, -1},
+                                            {1, -1, 1, -1, 1, -1, 1, -1},
+                                            {-1, 1, -1, 1, 1, -1, 1, -1}};
 
 /// Characteristic length for the stable time step, dt = L / c: the bound of Flanagan and
 /// Belytschko on the largest eigenfrequency of the uniform-strain hexahedron,
