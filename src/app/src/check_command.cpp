@@ -6,10 +6,13 @@
 
 #include <cmath>
 #include <ostream>
+#include <variant>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/element/solid_kernels.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/law/user_constants.hpp"
+#include "plyform/setup/build.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/validate.hpp"
 
@@ -51,6 +54,61 @@ void print_law(const model::ModelDesc& model, const model::UserInterfaceFriction
   }
 }
 
+// Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
+// runtime model cannot be built.
+bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& err) {
+  const setup::BuildResult built = setup::build(desc);
+  for (const auto& d : built.errors)
+    fmt::print(err, "error: {}\n", d.to_string());
+  if (!built.model)
+    return false;
+  const core::Model& m = *built.model;
+  if (desc.units) {
+    fmt::print(out,
+               "units (as declared, no conversion): length {}, time {}, mass {}, temperature {}\n",
+               desc.units->length, desc.units->time, desc.units->mass, desc.units->temp);
+  }
+  std::size_t one = 0, two = 0;
+  for (const auto& b : m.solid_blocks) {
+    (b.formulation == core::SolidFormulation::one_point ? one : two) += b.size();
+  }
+  fmt::print(out, "nodes: {}\n", m.node_count());
+  fmt::print(out, "solid elements: {} (ELFORM 1: {}, ELFORM 2: {})\n", one + two, one, two);
+  fmt::print(out, "parts: {}\n", m.parts.size());
+  double dt_min = 1e300;
+  core::GlobalId dt_element = 0;
+  const element::NodalView view{m.x0.data(), m.y0.data(), m.z0.data(), m.x0.data(), m.y0.data(),
+                                m.z0.data(), m.x0.data(), m.y0.data(), m.z0.data()};
+  for (const auto& b : m.solid_blocks) {
+    const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
+    const char* law = std::holds_alternative<core::ElasticMaterial>(mat)
+                          ? "*MAT_ELASTIC"
+                          : "*MAT_MOONEY-RIVLIN_RUBBER";
+    const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
+    fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}\n",
+               part.id, part.title, b.size(), static_cast<int>(b.formulation), law, b.hourglass.ihq,
+               b.hourglass.qm);
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const double dt = element::solid_stable_dt(b, mat, view, e);
+      if (dt < dt_min) {
+        dt_min = dt;
+        dt_element = b.element_id[e];
+      }
+    }
+  }
+  fmt::print(out, "constraints: {} fixed nodes/dofs, {} prescribed motions, {} nodal loads\n",
+             m.fixed.size(), m.motions.size(), m.loads.size());
+  fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
+  if (dt_min < 1e300) {
+    const double dt = m.controls.tssfac * dt_min;
+    fmt::print(out,
+               "stable time step estimate: {:.6g} (TSSFAC {:g}, set by solid element {}), about "
+               "{:.3g} cycles\n",
+               dt, m.controls.tssfac, dt_element, m.controls.end_time / dt);
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err) {
@@ -81,6 +139,11 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
   fmt::print(out, "cohesive interfaces: {}\n", m.user_interface_frictions.size());
   for (const auto& u : m.user_interface_frictions)
     print_law(m, u, out);
+  // A deck with a mesh must also build into a runnable model.
+  if (!m.nodes.empty() || !m.solids.empty()) {
+    if (!print_mesh(m, out, err))
+      return 1;
+  }
   return 0;
 }
 

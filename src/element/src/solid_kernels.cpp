@@ -197,12 +197,22 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       const core::Index* e = conn + 8 * (c0 + (k < n ? k : 0));
       for (int i = 0; i < 8; ++i) {
         const auto node = static_cast<std::size_t>(e[i]);
-        X[i][k] = nv.x[node];
-        Y[i][k] = nv.y[node];
-        Z[i][k] = nv.z[node];
-        VX[i][k] = nv.vx[node];
-        VY[i][k] = nv.vy[node];
-        VZ[i][k] = nv.vz[node];
+        if (nv.packed != nullptr) {
+          const double* p = nv.packed + 6 * node;
+          X[i][k] = p[0];
+          Y[i][k] = p[1];
+          Z[i][k] = p[2];
+          VX[i][k] = p[3];
+          VY[i][k] = p[4];
+          VZ[i][k] = p[5];
+        } else {
+          X[i][k] = nv.x[node];
+          Y[i][k] = nv.y[node];
+          Z[i][k] = nv.z[node];
+          VX[i][k] = nv.vx[node];
+          VY[i][k] = nv.vy[node];
+          VZ[i][k] = nv.vz[node];
+        }
       }
     }
     // Coordinates relative to node 1 (the hourglass vectors sum to zero, so h . x is unchanged).

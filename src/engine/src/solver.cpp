@@ -70,9 +70,25 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     s.vy = model.v0y;
     s.vz = model.v0z;
   }
-  const element::NodalView view{s.x.data(),      s.y.data(),      s.z.data(),
-                                model.x0.data(), model.y0.data(), model.z0.data(),
-                                s.vx.data(),     s.vy.data(),     s.vz.data()};
+  // Packed copy of x, y, z, vx, vy, vz per node for the element gathers (one cache line).
+  std::vector<double> packed(6 * n);
+  const auto pack = [&] {
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      double* p = &packed[6 * i];
+      p[0] = s.x[i];
+      p[1] = s.y[i];
+      p[2] = s.z[i];
+      p[3] = s.vx[i];
+      p[4] = s.vy[i];
+      p[5] = s.vz[i];
+    }
+  };
+  element::NodalView view{s.x.data(),      s.y.data(),      s.z.data(),
+                          model.x0.data(), model.y0.data(), model.z0.data(),
+                          s.vx.data(),     s.vy.data(),     s.vz.data()};
+  view.packed = packed.data();
   std::vector<element::SolidBlockState> solids(model.solid_blocks.size());
   for (std::size_t b = 0; b < solids.size(); ++b)
     solids[b].resize(model.solid_blocks[b]);
@@ -101,6 +117,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   std::size_t element_count = model.solid_count();
 
   const auto internal = [&](double dt) {
+    pack();
 #pragma omp parallel for schedule(dynamic, 4)
     for (long w = 0; w < static_cast<long>(work.size()); ++w) {
       const WorkItem& it = work[static_cast<std::size_t>(w)];

@@ -18,6 +18,9 @@ struct NodalView {
   const double *x, *y, *z;     ///< current coordinates (t_{n+1})
   const double *x0, *y0, *z0;  ///< reference coordinates
   const double *vx, *vy, *vz;  ///< velocities (t_{n+1/2})
+  /// Optional: x, y, z, vx, vy, vz of each node side by side (6 per node), the same values as
+  /// above; an element then gathers each node from one cache line instead of six.
+  const double* packed = nullptr;
 };
 
 /// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx),
