@@ -23,6 +23,11 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "Read and validate a deck; print a summary");
   check->add_option("DECK", check_deck, "keyword deck (.k)")->required();
 
+  std::filesystem::path plot_dir;
+  CLI::App* plot = app.add_subcommand(
+      "plot", "PNG plots of the histories of a run (glstat, nodout, rcforc, cohesive)");
+  plot->add_option("OUTDIR", plot_dir, "results folder of `plyform run`")->required();
+
   plyform::app::LawOptions law;
   std::filesystem::path law_output;
   double penalty = 0.0;
@@ -48,6 +53,8 @@ int main(int argc, char** argv) {
   }
   if (check->parsed())
     return plyform::app::run_check(check_deck, std::cout, std::cerr);
+  if (plot->parsed())
+    return plyform::app::run_plot(plot_dir, std::cout, std::cerr);
   if (law_cmd->parsed()) {
     if (*out_opt)
       law.output = law_output;

@@ -33,4 +33,11 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 /// `plyform check DECK.k`
 int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err);
 
+/// `plyform plot OUTDIR`: runs scripts/plot_histories.py with /usr/bin/python3 (overrides:
+/// $PLYFORM_SCRIPTS_DIR, $PLYFORM_PYTHON), which writes energies.png from glstat.csv and
+/// nodout.png, rcforc.png, cohesive.png from the history files present. Returns the script's
+/// exit status (its messages go to the process's standard streams), or 1 with a message on
+/// `err` when OUTDIR, the script or the interpreter is missing.
+int run_plot(const std::filesystem::path& outdir, std::ostream& out, std::ostream& err);
+
 }  // namespace plyform::app
