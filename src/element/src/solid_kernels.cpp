@@ -260,7 +260,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
       st.volume[c0 + k] = vol[k];
       // Stable step: L = 1 / sqrt(2 sum |b|^2) (see characteristic_length).
-      const double dte = inv_c / std::sqrt(2.0 * bsq[k]);
+      const double dte = st.dt_factor[c0 + k] * inv_c / std::sqrt(2.0 * bsq[k]);
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = c0 + k;
@@ -416,7 +416,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
             s.f[j][p] = scale * f[j];
         }
       }
-      const double dte = characteristic_length(mean[k]) / c_wave;
+      const double dte = st.dt_factor[e] * characteristic_length(mean[k]) / c_wave;
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = e;
@@ -461,6 +461,7 @@ void SolidBlockState::resize(const core::SolidBlock& block) {
   hourglass.assign(n * 12, 0.0);
   force.assign(n * 24, 0.0);
   volume.assign(n, 0.0);
+  dt_factor.assign(n, 1.0);
 }
 
 SolidResult solid_forces(const core::SolidBlock& block, const core::Material& material,

@@ -6,11 +6,12 @@
 namespace plyform::engine {
 
 MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes,
-                       std::vector<double>& mass) {
+                       std::vector<double>& mass, std::vector<element::SolidBlockState>& solids) {
   MassResult r;
   mass.assign(model.node_count(), 0.0);
   const double target = std::abs(model.controls.dt2ms);  // the step mass scaling aims for
-  for (const core::SolidBlock& b : model.solid_blocks) {
+  for (std::size_t bi = 0; bi < model.solid_blocks.size(); ++bi) {
+    const core::SolidBlock& b = model.solid_blocks[bi];
     const core::Material& m = model.materials[static_cast<std::size_t>(b.material)];
     const double rho = core::density(m);
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -23,6 +24,7 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
         if (dte < target)
           scale = (target / dte) * (target / dte);
       }
+      solids[bi].dt_factor[e] = std::sqrt(scale);
       r.physical += me;
       r.added += me * (scale - 1.0);
       for (int i = 0; i < 8; ++i) {

@@ -16,7 +16,8 @@ struct MassResult {
 /// Fills `mass` (node_count) with rho V0 / 8 per element node. With DT2MS != 0, elements whose
 /// stable step times TSSFAC is below TSSFAC |DT2MS| get their density raised so that it is not
 /// (mass added, never removed).
+/// `solids` receive each element's step factor sqrt(scale) in SolidBlockState::dt_factor.
 MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes,
-                       std::vector<double>& mass);
+                       std::vector<double>& mass, std::vector<element::SolidBlockState>& solids);
 
 }  // namespace plyform::engine

@@ -93,7 +93,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   for (std::size_t b = 0; b < solids.size(); ++b)
     solids[b].resize(model.solid_blocks[b]);
 
-  const MassResult mass = lumped_mass(model, view, s.mass);
+  const MassResult mass = lumped_mass(model, view, s.mass, solids);
   res.physical_mass = mass.physical;
   res.added_mass = mass.added;
   std::vector<double> inv_mass(n, 0.0);

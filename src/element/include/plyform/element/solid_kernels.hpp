@@ -31,6 +31,9 @@ struct SolidBlockState {
   std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
   std::vector<double> force;      ///< 24 per element: [e][node][xyz]
   std::vector<double> volume;     ///< current volume per element
+  /// sqrt(scaled mass / physical mass) per element (mass scaling): the element's stable step
+  /// grows by this factor. 1 without mass scaling.
+  std::vector<double> dt_factor;
 
   void resize(const core::SolidBlock& block);
 };
