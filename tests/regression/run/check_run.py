@@ -1,0 +1,231 @@
+#!/usr/bin/python3
+"""`plyform run` end to end: results read back by VTK, threads, instability diagnosis.
+
+    check_run.py vtk      PLYFORM DECK OUTDIR
+    check_run.py threads  PLYFORM DECK OUTDIR
+    check_run.py unstable PLYFORM DECK OUTDIR REGEX
+
+vtk       runs DECK; VTK's own reader (python3-vtk9 of Debian) reads every results_NNNN.vtu
+          listed in results.pvd; the .pvd lists the states in increasing time, one file per
+          state, all present; each state's points are the deck's *NODE coordinates plus the
+          displacement; the displacement and velocity of every history node equal nodout.csv's
+          at the same time (the deck writes states and nodout on one interval).
+threads   runs DECK with --threads 1 and --threads 2: nodout.csv and glstat.csv byte-identical.
+unstable  runs DECK, which goes unstable: exit code non-zero, stderr matches REGEX (names the
+          element or node and the time), the .pvd is valid XML whose last state is at the
+          failure time, every listed .vtu is readable (by VTK when installed), and summary.json
+          reports the error.
+
+Exit status: 0 pass, 1 fail, 77 python3-vtk9 missing (vtk mode only: ctest shows a skip).
+Run with Debian's /usr/bin/python3: the first python3 on PATH may lack the Debian packages.
+"""
+
+import csv
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+FAILURES = []
+
+
+def check(condition, message):
+    if not condition:
+        FAILURES.append(message)
+    return condition
+
+
+def run_plyform(plyform, deck, outdir, *extra):
+    shutil.rmtree(outdir, ignore_errors=True)
+    p = subprocess.run([plyform, "run", deck, "-o", outdir, *extra], capture_output=True,
+                       text=True, check=False)
+    return p
+
+
+def read_deck_nodes(deck):
+    """*NODE of a fixed-format deck (8 + 3 x 16 columns): id -> (x, y, z)."""
+    nodes, inside = {}, False
+    with open(deck, encoding="ascii") as f:
+        for line in f:
+            if line.startswith("*"):
+                inside = line.strip().upper() == "*NODE"
+                continue
+            if inside and not line.startswith("$") and line.strip():
+                nodes[int(line[0:8])] = tuple(float(line[8 + 16 * i:24 + 16 * i]) for i in range(3))
+    return nodes
+
+
+def read_pvd(outdir):
+    """[(time, file)] in the order of the collection."""
+    root = ET.parse(os.path.join(outdir, "results.pvd")).getroot()
+    check(root.tag == "VTKFile" and root.get("type") == "Collection", "pvd: not a VTK collection")
+    return [(float(d.get("timestep")), d.get("file")) for d in root.iter("DataSet")]
+
+
+def read_nodout(outdir):
+    """{time: {node: row}} with floats."""
+    rows = {}
+    with open(os.path.join(outdir, "nodout.csv"), encoding="ascii") as f:
+        for r in csv.DictReader(f):
+            rows.setdefault(float(r["time"]), {})[int(r["node"])] = {
+                k: float(v) for k, v in r.items() if k not in ("time", "node")}
+    return rows
+
+
+def vtk_reader(path):
+    import vtk  # noqa: PLC0415 (imported late: the threads mode needs no VTK)
+    from vtk.util.numpy_support import vtk_to_numpy  # noqa: PLC0415
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    pd = grid.GetPointData()
+    return {
+        "points": vtk_to_numpy(grid.GetPoints().GetData()) if grid.GetPoints() else None,
+        "cells": grid.GetNumberOfCells(),
+        "displacement": pd.GetArray("displacement"),
+        "velocity": pd.GetArray("velocity"),
+        "node_id": pd.GetArray("node_id"),
+        "stress": grid.GetCellData().GetArray("stress"),
+    }
+
+
+def mode_vtk(plyform, deck, outdir):
+    try:
+        import vtk  # noqa: F401, PLC0415
+    except ImportError:
+        print("check_run.py: python3-vtk9 is not installed (apt-get install python3-vtk9)")
+        return 77
+    p = run_plyform(plyform, deck, outdir)
+    if not check(p.returncode == 0, f"plyform run exited {p.returncode}: {p.stderr}"):
+        return 1
+    nodes = read_deck_nodes(deck)
+    states = read_pvd(outdir)
+    nodout = read_nodout(outdir)
+    check(len(states) >= 5, f"only {len(states)} states")
+    times = [t for t, _ in states]
+    check(all(a < b for a, b in zip(times, times[1:])), f"pvd times not increasing: {times}")
+    check(len({f for _, f in states}) == len(states), "pvd lists a file twice")
+    vtus = sorted(f for f in os.listdir(outdir) if re.fullmatch(r"results_\d{4}\.vtu", f))
+    check(vtus == sorted(f for _, f in states), f"pvd {states} does not list the files {vtus}")
+    compared = 0
+    for t, name in states:
+        g = vtk_reader(os.path.join(outdir, name))
+        n = g["points"].shape[0] if g["points"] is not None else 0
+        if not check(n == len(nodes) and g["displacement"] is not None and g["node_id"] is not None
+                     and g["velocity"] is not None, f"{name}: {n} points or arrays missing"):
+            continue
+        check(g["cells"] > 0 and g["stress"] is not None and g["stress"].GetNumberOfComponents()
+              == 6, f"{name}: cells or 6-component stress missing")
+        rows = nodout.get(t)
+        check(rows is not None, f"{name}: no nodout rows at t = {t!r}")
+        for i in range(n):
+            nid = int(g["node_id"].GetTuple1(i))
+            u = g["displacement"].GetTuple3(i)
+            x0 = nodes[nid]
+            for d in range(3):
+                # The solver forms x = x0 + u in double precision: the same sum here is exact.
+                check(g["points"][i][d] == x0[d] + u[d],
+                      f"{name}: node {nid} point[{d}] {g['points'][i][d]!r} != x0 + u "
+                      f"{x0[d] + u[d]!r}")
+            if rows and nid in rows:
+                v = g["velocity"].GetTuple3(i)
+                r = rows[nid]
+                for d, c in enumerate("xyz"):
+                    check(u[d] == r["u" + c], f"{name}: node {nid} u{c} {u[d]!r} != nodout "
+                          f"{r['u' + c]!r} at t = {t!r}")
+                    check(v[d] == r["v" + c], f"{name}: node {nid} v{c} {v[d]!r} != nodout "
+                          f"{r['v' + c]!r} at t = {t!r}")
+                    check(g["points"][i][d] == r[c], f"{name}: node {nid} {c} != nodout")
+                compared += 1
+    history = len(next(iter(nodout.values()))) if nodout else 0
+    check(history > 0 and compared == history * len(states),
+          f"compared {compared} history-node states, expected {history} x {len(states)}")
+    moved = max(abs(r["ux"]) for rows in nodout.values() for r in rows.values())
+    check(moved > 1e-3, f"the history nodes hardly move (max |ux| = {moved})")
+    print(f"check_run.py vtk: {len(states)} states, {compared} history-node states compared")
+    return 0
+
+
+def mode_threads(plyform, deck, outdir):
+    out = {}
+    for threads in (1, 2):
+        d = os.path.join(outdir, f"threads_{threads}")
+        p = run_plyform(plyform, deck, d, "--threads", str(threads))
+        if not check(p.returncode == 0, f"--threads {threads} exited {p.returncode}: {p.stderr}"):
+            return 1
+        out[threads] = d
+    for name in ("nodout.csv", "glstat.csv"):
+        with open(os.path.join(out[1], name), "rb") as a, open(os.path.join(out[2], name),
+                                                                "rb") as b:
+            da, db = a.read(), b.read()
+        check(len(da.splitlines()) > 10, f"{name}: too few lines")
+        check(da == db, f"{name} differs between 1 and 2 threads")
+    print("check_run.py threads: nodout.csv and glstat.csv identical with 1 and 2 threads")
+    return 0
+
+
+def mode_unstable(plyform, deck, outdir, pattern):
+    p = run_plyform(plyform, deck, outdir)
+    check(p.returncode != 0, "plyform run exited 0 on an unstable deck")
+    m = re.search(pattern, p.stderr)
+    check(m is not None, f"stderr does not match {pattern!r}: {p.stderr!r}")
+    states = read_pvd(outdir)
+    check(len(states) >= 2, f"pvd lists {len(states)} states")
+    times = [t for t, _ in states]
+    check(all(a < b for a, b in zip(times, times[1:])), f"pvd times not increasing: {times}")
+    with open(os.path.join(outdir, "summary.json"), encoding="utf-8") as f:
+        summary = json.load(f)
+    check(summary["status"].startswith("error"), f"summary status {summary['status']!r}")
+    check(abs(times[-1] - summary["final_time"]) <= 1e-12 * summary["final_time"],
+          f"last state at {times[-1]}, failure at {summary['final_time']}")
+    check(summary["final_time"] < summary["end_time"], "ran to the end")
+    if m is not None and "t" in m.groupdict():
+        t_msg = float(m.group("t"))
+        check(abs(t_msg - summary["final_time"]) <= 1e-5 * summary["final_time"],
+              f"message time {t_msg} vs final time {summary['final_time']}")
+    try:
+        import vtk  # noqa: F401, PLC0415
+        have_vtk = True
+    except ImportError:
+        have_vtk = False
+    for _, name in states:
+        path = os.path.join(outdir, name)
+        if not check(os.path.isfile(path), f"{name} listed but missing"):
+            continue
+        if have_vtk:
+            check(vtk_reader(path)["points"] is not None, f"VTK cannot read {name}")
+        else:
+            ET.parse(path)  # at least well-formed up to the appended data
+    print(f"check_run.py unstable: exit {p.returncode}, {len(states)} states, "
+          f"'{p.stderr.strip().splitlines()[-1]}'")
+    return 0
+
+
+def main(argv):
+    if len(argv) < 4:
+        print(__doc__)
+        return 2
+    mode, plyform, deck, outdir = argv[:4]
+    if mode == "vtk":
+        status = mode_vtk(plyform, deck, outdir)
+    elif mode == "threads":
+        status = mode_threads(plyform, deck, outdir)
+    elif mode == "unstable" and len(argv) == 5:
+        status = mode_unstable(plyform, deck, outdir, argv[4])
+    else:
+        print(__doc__)
+        return 2
+    for f in FAILURES[:20]:
+        print("FAIL:", f)
+    if FAILURES:
+        print(f"check_run.py {mode}: {len(FAILURES)} failures")
+        return 1
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
