@@ -171,7 +171,8 @@ void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLan
 
 template <class M>
 SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockState& st,
-                      const NodalView& nv, double dt, std::size_t begin, std::size_t end) {
+                      const NodalView& nv, double dt, std::size_t begin, std::size_t end,
+                      const NodalForces& out) {
   SolidResult r;
   constexpr bool kTotal = std::is_same_v<M, MooneyRivlinMaterial>;
   const double c_wave = material::dilatational_wave_speed(core::Material{mat});
@@ -345,11 +346,12 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
     }
     for (std::size_t k = 0; k < n; ++k) {
-      double* f = &st.force[24 * (c0 + k)];
+      const core::Index* e = conn + 8 * (c0 + k);
       for (int i = 0; i < 8; ++i) {
-        f[3 * i + 0] = F[0][i][k];
-        f[3 * i + 1] = F[1][i][k];
-        f[3 * i + 2] = F[2][i][k];
+        const auto node = static_cast<std::size_t>(e[i]);
+        out.fx[node] += F[0][i][k];
+        out.fy[node] += F[1][i][k];
+        out.fz[node] += F[2][i][k];
       }
       r.hourglass_energy += power[k] * dt;
     }
@@ -359,7 +361,8 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
 
 template <class M>
 SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, SolidBlockState& st,
-                              const NodalView& nv, double dt, std::size_t begin, std::size_t end) {
+                              const NodalView& nv, double dt, std::size_t begin, std::size_t end,
+                              const NodalForces& out) {
   SolidResult r;
   constexpr bool kTotal = std::is_same_v<M, MooneyRivlinMaterial>;
   constexpr std::size_t kElems = kChunk / 8;
@@ -426,9 +429,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
 
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;
-      double* f = &st.force[24 * e];
-      for (int i = 0; i < 24; ++i)
-        f[i] = 0.0;
+      double f[24] = {};
       const UniformGradient& bm = mean[k];
       for (int q = 0; q < 8; ++q) {
         const std::size_t p = 8 * e + static_cast<std::size_t>(q);
@@ -446,6 +447,13 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
           f[3 * i + 2] += w * (szx * bx[i] + syz * by[i] + (szz - pm) * bz[i] + pm * bm.bz[i]);
         }
       }
+      const core::Index* nodes = &block.connectivity[8 * e];
+      for (int i = 0; i < 8; ++i) {
+        const auto node = static_cast<std::size_t>(nodes[i]);
+        out.fx[node] += f[3 * i];
+        out.fy[node] += f[3 * i + 1];
+        out.fz[node] += f[3 * i + 2];
+      }
     }
   }
   return r;
@@ -459,20 +467,19 @@ void SolidBlockState::resize(const core::SolidBlock& block) {
   for (auto& c : s)
     c.assign(n * static_cast<std::size_t>(points), 0.0);
   hourglass.assign(n * 12, 0.0);
-  force.assign(n * 24, 0.0);
   volume.assign(n, 0.0);
   dt_factor.assign(n, 1.0);
 }
 
 SolidResult solid_forces(const core::SolidBlock& block, const core::Material& material,
                          SolidBlockState& state, const NodalView& nodes, double dt,
-                         std::size_t begin, std::size_t end) {
+                         std::size_t begin, std::size_t end, const NodalForces& forces) {
   return std::visit(
       [&](const auto& m) {
         if (block.formulation == core::SolidFormulation::one_point) {
-          return one_point(block, m, state, nodes, dt, begin, end);
+          return one_point(block, m, state, nodes, dt, begin, end, forces);
         }
-        return selective_reduced(block, m, state, nodes, dt, begin, end);
+        return selective_reduced(block, m, state, nodes, dt, begin, end, forces);
       },
       material);
 }

@@ -9,7 +9,6 @@
 #include <omp.h>
 #endif
 
-#include "assembly.hpp"
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "mass.hpp"
@@ -17,20 +16,28 @@
 namespace plyform::engine {
 namespace {
 
-// A range of elements of one block: the unit of parallel work in the element loop.
+// A range of elements of one colour of one block: the unit of parallel work in the element
+// loop. Items of one phase (block, colour) share no node and run in parallel; phases run in
+// order, so each node sums its forces in the same order for any number of threads.
 struct WorkItem {
   std::size_t block, begin, end;
 };
 
-std::vector<WorkItem> make_work(const core::Model& model) {
+std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
   constexpr std::size_t kItem = 256;
-  std::vector<WorkItem> w;
+  std::vector<std::vector<WorkItem>> phases;
   for (std::size_t b = 0; b < model.solid_blocks.size(); ++b) {
-    const std::size_t n = model.solid_blocks[b].size();
-    for (std::size_t e = 0; e < n; e += kItem)
-      w.push_back({b, e, std::min(n, e + kItem)});
+    const std::vector<std::size_t>& start = model.solid_blocks[b].colour_start;
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+      std::vector<WorkItem> phase;
+      for (std::size_t e = start[c]; e < start[c + 1]; e += kItem) {
+        phase.push_back({b, e, std::min(start[c + 1], e + kItem)});
+      }
+      if (!phase.empty())
+        phases.push_back(std::move(phase));
+    }
   }
-  return w;
+  return phases;
 }
 
 struct InternalResult {
@@ -110,39 +117,61 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
                            " nodes belong to no element: they carry no mass and do not move");
   }
 
-  const ForceGather gather(model);
   const BoundaryConditions bc(model);
-  const std::vector<WorkItem> work = make_work(model);
-  std::vector<element::SolidResult> item_results(work.size());
+  for (const core::SolidBlock& b : model.solid_blocks) {
+    if (b.colour_start.empty() || b.colour_start.back() != b.size()) {
+      res.ok = false;
+      res.error = "internal error: solid blocks must be coloured (core::colour_solid_blocks)";
+      return res;
+    }
+  }
+  const std::vector<std::vector<WorkItem>> phases = make_phases(model);
+  std::vector<std::size_t> phase_offset(phases.size() + 1, 0);
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    phase_offset[p + 1] = phase_offset[p] + phases[p].size();
+  }
+  std::vector<element::SolidResult> item_results(phase_offset.back());
   std::size_t element_count = model.solid_count();
+  const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
 
   const auto internal = [&](double dt) {
     pack();
-#pragma omp parallel for schedule(dynamic, 4)
-    for (long w = 0; w < static_cast<long>(work.size()); ++w) {
-      const WorkItem& it = work[static_cast<std::size_t>(w)];
-      const core::SolidBlock& blk = model.solid_blocks[it.block];
-      item_results[static_cast<std::size_t>(w)] =
-          element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
-                                solids[it.block], view, dt, it.begin, it.end);
+#pragma omp parallel
+    {
+#pragma omp for schedule(static)
+      for (long li = 0; li < static_cast<long>(n); ++li) {
+        const auto i = static_cast<std::size_t>(li);
+        s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
+      }
+      for (std::size_t p = 0; p < phases.size(); ++p) {
+        const std::vector<WorkItem>& phase = phases[p];
+#pragma omp for schedule(dynamic, 2)
+        for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
+          const WorkItem& it = phase[static_cast<std::size_t>(w)];
+          const core::SolidBlock& blk = model.solid_blocks[it.block];
+          item_results[phase_offset[p] + static_cast<std::size_t>(w)] =
+              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                                    solids[it.block], view, dt, it.begin, it.end, forces);
+        }
+      }
     }
     InternalResult r;
-    for (std::size_t w = 0; w < work.size(); ++w) {  // in order: deterministic
-      const element::SolidResult& x = item_results[w];
-      if (x.failed && !r.failed) {
-        r.failed = true;
-        r.failed_block = work[w].block;
-        r.failed_element = x.failed_element;
+    for (std::size_t p = 0; p < phases.size(); ++p) {  // in order: deterministic
+      for (std::size_t w = 0; w < phases[p].size(); ++w) {
+        const element::SolidResult& x = item_results[phase_offset[p] + w];
+        if (x.failed && !r.failed) {
+          r.failed = true;
+          r.failed_block = phases[p][w].block;
+          r.failed_element = x.failed_element;
+        }
+        if (x.dt_min < r.dt_min) {
+          r.dt_min = x.dt_min;
+          r.dt_block = phases[p][w].block;
+          r.dt_element = x.dt_element;
+        }
+        r.hourglass += x.hourglass_energy;
       }
-      if (x.dt_min < r.dt_min) {
-        r.dt_min = x.dt_min;
-        r.dt_block = work[w].block;
-        r.dt_element = x.dt_element;
-      }
-      r.hourglass += x.hourglass_energy;
     }
-    if (!r.failed)
-      gather.gather(solids, s.fx.data(), s.fy.data(), s.fz.data());
     return r;
   };
   const auto element_name = [&](std::size_t b, std::size_t e) {

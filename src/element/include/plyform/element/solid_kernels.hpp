@@ -3,8 +3,10 @@
 // gradient, Flanagan-Belytschko hourglass control) and ELFORM 2 (2x2x2 Gauss, selective
 // reduced: deviatoric part at the points, volumetric part from the element mean).
 //
-// The kernel writes each element's 24 nodal forces to its own slots of `force`; the engine sums
-// them per node in a fixed order, so results do not depend on the number of threads.
+// The kernel adds each element's 8 nodal forces to the nodal force arrays. Called on the
+// elements of one colour at a time (core::SolidBlock::colour_start), it can run on several
+// threads without races, and every node sums its contributions in the same order whatever the
+// number of threads.
 
 #include <cstddef>
 #include <vector>
@@ -23,13 +25,17 @@ struct NodalView {
   const double* packed = nullptr;
 };
 
-/// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx),
-/// stiffness-hourglass displacements per element, and the element force slots.
+/// Nodal internal force accumulators (length node_count), added to by the kernels.
+struct NodalForces {
+  double *fx, *fy, *fz;
+};
+
+/// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx) and
+/// stiffness-hourglass displacements per element.
 struct SolidBlockState {
   int points = 1;  ///< integration points per element
   std::vector<double> s[6];
   std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
-  std::vector<double> force;      ///< 24 per element: [e][node][xyz]
   std::vector<double> volume;     ///< current volume per element
   /// sqrt(scaled mass / physical mass) per element (mass scaling): the element's stable step
   /// grows by this factor. 1 without mass scaling.
@@ -47,12 +53,12 @@ struct SolidResult {
   std::size_t failed_element = 0;
 };
 
-/// Updates stresses and element forces of elements [begin, end) of `block` for a step `dt`
-/// (the step from t_n to t_{n+1}; dt = 0 computes forces of the current stress only).
-/// `wave_speed` and `density` are those of the block's material.
+/// Updates the stresses of elements [begin, end) of `block` for a step `dt` (from t_n to
+/// t_{n+1}; dt = 0 computes the forces of the current stress only) and adds their internal
+/// forces to `forces`. [begin, end) must lie within one colour when threads share `forces`.
 SolidResult solid_forces(const core::SolidBlock& block, const core::Material& material,
                          SolidBlockState& state, const NodalView& nodes, double dt,
-                         std::size_t begin, std::size_t end);
+                         std::size_t begin, std::size_t end, const NodalForces& forces);
 
 /// The stable step of element e alone (geometry and material), for reports.
 double solid_stable_dt(const core::SolidBlock& block, const core::Material& material,
