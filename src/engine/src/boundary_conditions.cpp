@@ -22,12 +22,17 @@ BoundaryConditions::BoundaryConditions(const core::Model& model)
   for (const core::PrescribedMotion& m : model.motions) {
     constrained_[3 * static_cast<std::size_t>(m.node) + static_cast<std::size_t>(m.direction)] = 1;
   }
+  for (std::size_t i = 0; i < model.node_count(); ++i) {
+    if (constrained_[3 * i] || constrained_[3 * i + 1] || constrained_[3 * i + 2]) {
+      constrained_nodes_.push_back(static_cast<core::Index>(i));
+    }
+  }
 }
 
 void BoundaryConditions::loads(double t, NodalState& s) const {
-  std::fill(s.ex.begin(), s.ex.end(), 0.0);
-  std::fill(s.ey.begin(), s.ey.end(), 0.0);
-  std::fill(s.ez.begin(), s.ez.end(), 0.0);
+  // External forces are non-zero only at loaded nodes: reset those, then add every load.
+  for (const core::NodalLoad& l : model_.loads)
+    component(s.ex, s.ey, s.ez, l.direction)[l.node] = 0.0;
   for (const core::NodalLoad& l : model_.loads) {
     const double f = l.scale * model_.curves[static_cast<std::size_t>(l.curve)](t);
     component(s.ex, s.ey, s.ez, l.direction)[l.node] += f;

@@ -12,7 +12,8 @@ class BoundaryConditions {
  public:
   explicit BoundaryConditions(const core::Model& model);
 
-  /// External nodal forces at time t into s.ex, s.ey, s.ez.
+  /// External nodal forces at time t into s.ex, s.ey, s.ez (only loaded entries are touched:
+  /// the others stay 0).
   void loads(double t, NodalState& s) const;
 
   /// Imposes constraints on the velocities of the step [t, t + dt] (t = t_n, displacement u at
@@ -23,10 +24,15 @@ class BoundaryConditions {
 
   /// True for (node, direction) pairs whose velocity is imposed (reactions are computed there).
   [[nodiscard]] const std::vector<unsigned char>& constrained() const { return constrained_; }
+  /// The nodes with at least one constrained direction, in index order.
+  [[nodiscard]] const std::vector<core::Index>& constrained_nodes() const {
+    return constrained_nodes_;
+  }
 
  private:
   const core::Model& model_;
   std::vector<unsigned char> constrained_;  ///< 3 per node
+  std::vector<core::Index> constrained_nodes_;
 };
 
 }  // namespace plyform::engine

@@ -2,29 +2,40 @@
 // Sums over large index ranges whose value does not depend on the number of threads: the range
 // is cut into fixed chunks, each summed in order (in parallel), then the chunk sums in order.
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
 namespace plyform::engine {
 
-template <class F>
-double deterministic_sum(std::size_t n, F&& term) {
+/// N sums at once: term(i, acc) adds node i's contributions to acc[0..N-1]. The loop body may
+/// also update per-node state (each i is visited exactly once), which lets one pass over the
+/// nodes both advance them and accumulate energies.
+template <std::size_t N, class F>
+std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<double> partial(chunks, 0.0);
+  std::vector<std::array<double, N>> partial(chunks);
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < static_cast<long>(chunks); ++c) {
     const std::size_t b = static_cast<std::size_t>(c) * kChunk;
     const std::size_t e = b + kChunk < n ? b + kChunk : n;
-    double s = 0.0;
+    std::array<double, N> acc{};
     for (std::size_t i = b; i < e; ++i)
-      s += term(i);
-    partial[static_cast<std::size_t>(c)] = s;
+      term(i, acc);
+    partial[static_cast<std::size_t>(c)] = acc;
   }
-  double total = 0.0;
-  for (double p : partial)
-    total += p;
+  std::array<double, N> total{};
+  for (const auto& p : partial)
+    for (std::size_t k = 0; k < N; ++k)
+      total[k] += p[k];
   return total;
+}
+
+template <class F>
+double deterministic_sum(std::size_t n, F&& term) {
+  return deterministic_sums<1>(
+      n, [&](std::size_t i, std::array<double, 1>& acc) { acc[0] += term(i); })[0];
 }
 
 }  // namespace plyform::engine

@@ -134,15 +134,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   std::size_t element_count = model.solid_count();
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
 
+  // Element forces at the current positions; the nodal force arrays must be zero and the packed
+  // copy current (the node pass of the time loop does both).
+  double bad_velocities = 0.0;
   const auto internal = [&](double dt) {
-    pack();
 #pragma omp parallel
     {
-#pragma omp for schedule(static)
-      for (long li = 0; li < static_cast<long>(n); ++li) {
-        const auto i = static_cast<std::size_t>(li);
-        s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
-      }
       for (std::size_t p = 0; p < phases.size(); ++p) {
         const std::vector<WorkItem>& phase = phases[p];
 #pragma omp for schedule(dynamic, 2)
@@ -195,6 +192,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     sink.state(snapshot());  // keep the last state for the diagnosis
   };
 
+  pack();
   InternalResult ir = internal(0.0);
   if (ir.failed) {
     fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
@@ -222,28 +220,50 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   std::vector<double> old_x(n), old_y(n), old_z(n);
   const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
   const std::vector<unsigned char>& constrained = bc.constrained();
+  const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
 
-  // Half-step velocity update with constraints and reactions (m a = f_ext - f_int + R).
-  const auto advance_velocity = [&](double t_now, double dt_next, double dt_avg) {
-#pragma omp parallel for schedule(static)
-    for (long li = 0; li < static_cast<long>(n); ++li) {
-      const auto i = static_cast<std::size_t>(li);
-      old_x[i] = s.vx[i];
-      old_y[i] = s.vy[i];
-      old_z[i] = s.vz[i];
-      s.vx[i] += (s.ex[i] - s.fx[i]) * inv_mass[i] * dt_avg;
-      s.vy[i] += (s.ey[i] - s.fy[i]) * inv_mass[i] * dt_avg;
-      s.vz[i] += (s.ez[i] - s.fz[i]) * inv_mass[i] * dt_avg;
-    }
+  // Velocity update of the step [t, t + dt_next] with its half-step interval dt_avg, in one
+  // pass over the nodes: the work of the forces at t over the step just taken (second half of
+  // the trapezoid, `dt_prev`), v_{n+1/2} kept in old, v_{n+3/2} = old + a dt_avg, v_{n+1}, and
+  // a count of non-finite velocities. Then constraints and reactions on the constrained nodes.
+  // Returns {internal work, external work} of that half.
+  const auto advance_velocity = [&](double t_now, double dt_prev, double dt_next,
+                                    double dt_avg) -> std::array<double, 2> {
+    const double w = dt_prev / (2.0 * dt_avg);
+    const auto sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
+      const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
+      acc[0] += vx * s.fx[i] + vy * s.fy[i] + vz * s.fz[i];
+      acc[1] += vx * s.ex[i] + vy * s.ey[i] + vz * s.ez[i];
+      old_x[i] = vx;
+      old_y[i] = vy;
+      old_z[i] = vz;
+      const double nx = vx + (s.ex[i] - s.fx[i]) * inv_mass[i] * dt_avg;
+      const double ny = vy + (s.ey[i] - s.fy[i]) * inv_mass[i] * dt_avg;
+      const double nz = vz + (s.ez[i] - s.fz[i]) * inv_mass[i] * dt_avg;
+      s.vx[i] = nx;
+      s.vy[i] = ny;
+      s.vz[i] = nz;
+      s.vnx[i] = vx + (nx - vx) * w;
+      s.vny[i] = vy + (ny - vy) * w;
+      s.vnz[i] = vz + (nz - vz) * w;
+      if (!std::isfinite(nx + ny + nz))
+        acc[2] += 1.0;
+    });
+    bad_velocities = sums[2];
     bc.constrain(t_now, dt_next, dt_avg, old, s);
-#pragma omp parallel for schedule(static)
-    for (long li = 0; li < static_cast<long>(n); ++li) {
-      const auto i = static_cast<std::size_t>(li);
+    double reaction_work = 0.0;  // in node order: deterministic
+    for (core::Index ci : constrained_nodes) {
+      const auto i = static_cast<std::size_t>(ci);
       const unsigned char* c = &constrained[3 * i];
       s.rx[i] = c[0] ? s.mass[i] * (s.vx[i] - old_x[i]) / dt_avg - (s.ex[i] - s.fx[i]) : 0.0;
       s.ry[i] = c[1] ? s.mass[i] * (s.vy[i] - old_y[i]) / dt_avg - (s.ey[i] - s.fy[i]) : 0.0;
       s.rz[i] = c[2] ? s.mass[i] * (s.vz[i] - old_z[i]) / dt_avg - (s.ez[i] - s.fz[i]) : 0.0;
+      reaction_work += old_x[i] * s.rx[i] + old_y[i] * s.ry[i] + old_z[i] * s.rz[i];
+      s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w;
+      s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w;
+      s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w;
     }
+    return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[1] + reaction_work)};
   };
   const auto kinetic = [&] {
     return 0.5 * deterministic_sum(n, [&](std::size_t i) {
@@ -251,11 +271,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
            });
   };
 
-  // t = 0: velocities at t_0 are the initial ones; the first half step is dt/2.
-  s.vnx = s.vx;
-  s.vny = s.vy;
-  s.vnz = s.vz;
-  advance_velocity(0.0, dt, 0.5 * dt);
+  // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones.
+  advance_velocity(0.0, 0.0, dt, 0.5 * dt);
+  s.vnx = old_x;
+  s.vny = old_y;
+  s.vnz = old_z;
   const double kinetic0 = kinetic();
   double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
   double hourglass = 0.0;
@@ -276,8 +296,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   const core::OutputRequests& out = model.output;
   const double eps_t = 1e-9 * std::max(end_time, dt);
-  double next_state = out.d3plot_dt > 0.0 ? 0.0 : 0.0;
-  double next_glstat = 0.0, next_nodout = 0.0;
+  double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0;
   bool state_written = false;
   const auto write_outputs = [&](bool last) {
     state_written = false;
@@ -304,31 +323,31 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   };
   write_outputs(false);
 
-  const auto half_work = [&](const std::vector<double>& gx, const std::vector<double>& gy,
-                             const std::vector<double>& gz) {
-    return 0.5 * dt * deterministic_sum(n, [&](std::size_t i) {
-             return s.vx[i] * gx[i] + s.vy[i] * gy[i] + s.vz[i] * gz[i];
-           });
-  };
-
   while (true) {
     if (end_time > 0.0 && t + eps_t >= end_time)
       break;
     if (model.controls.end_cycle > 0 && cycle >= model.controls.end_cycle)
       break;
-    // Work of the forces at t_n over the step (first half of the trapezoid).
-    work_internal += half_work(s.fx, s.fy, s.fz);
-    work_external += half_work(s.ex, s.ey, s.ez) + half_work(s.rx, s.ry, s.rz);
-#pragma omp parallel for schedule(static)
-    for (long li = 0; li < static_cast<long>(n); ++li) {
-      const auto i = static_cast<std::size_t>(li);
-      s.ux[i] += s.vx[i] * dt;
-      s.uy[i] += s.vy[i] * dt;
-      s.uz[i] += s.vz[i] * dt;
-      s.x[i] = model.x0[i] + s.ux[i];
-      s.y[i] = model.y0[i] + s.uy[i];
-      s.z[i] = model.z0[i] + s.uz[i];
-    }
+    // One pass over the nodes: work of the forces at t_n over the step (first half of the
+    // trapezoid), positions at t_{n+1}, the packed copy for the elements, zeroed forces.
+    const auto work = deterministic_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
+      const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
+      acc[0] += vx * s.fx[i] + vy * s.fy[i] + vz * s.fz[i];
+      acc[1] += vx * (s.ex[i] + s.rx[i]) + vy * (s.ey[i] + s.ry[i]) + vz * (s.ez[i] + s.rz[i]);
+      s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
+      s.ux[i] += vx * dt;
+      s.uy[i] += vy * dt;
+      s.uz[i] += vz * dt;
+      double* p = &packed[6 * i];
+      p[0] = s.x[i] = model.x0[i] + s.ux[i];
+      p[1] = s.y[i] = model.y0[i] + s.uy[i];
+      p[2] = s.z[i] = model.z0[i] + s.uz[i];
+      p[3] = vx;
+      p[4] = vy;
+      p[5] = vz;
+    });
+    work_internal += 0.5 * dt * work[0];
+    work_external += 0.5 * dt * work[1];
     t += dt;
     ++cycle;
 
@@ -340,8 +359,6 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     hourglass += ir.hourglass;
     bc.loads(t, s);
-    work_internal += half_work(s.fx, s.fy, s.fz);
-    work_external += half_work(s.ex, s.ey, s.ez);
 
     double dt_next = tssfac * ir.dt_min;
     if (dt_next < dt_floor) {
@@ -351,26 +368,14 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     if (end_time > 0.0 && t + dt_next > end_time)
       dt_next = std::max(end_time - t, 1e-3 * dt_next);
-    const double dt_avg = 0.5 * (dt + dt_next);
-    advance_velocity(t, dt_next, dt_avg);
-    // Second half of the reaction work over the step just taken.
-    work_external += 0.5 * dt * deterministic_sum(n, [&](std::size_t i) {
-                       return old_x[i] * s.rx[i] + old_y[i] * s.ry[i] + old_z[i] * s.rz[i];
-                     });
-    // Velocities at t_{n+1}: half of the step's acceleration on top of v_{n+1/2}.
-    const double w = dt / (2.0 * dt_avg);
-    std::size_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
-    for (long li = 0; li < static_cast<long>(n); ++li) {
-      const auto i = static_cast<std::size_t>(li);
-      s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w;
-      s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w;
-      s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w;
-      if (!std::isfinite(s.vx[i] + s.vy[i] + s.vz[i]))
-        bad = std::min(bad, i);
-    }
-    if (bad < n) {
-      fail("non-finite velocity at node " + std::to_string(model.node_id[bad]) +
+    const auto half = advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
+    work_internal += half[0];
+    work_external += half[1];
+    if (bad_velocities > 0.0) {
+      std::size_t bad = 0;
+      while (bad < n && std::isfinite(s.vx[bad] + s.vy[bad] + s.vz[bad]))
+        ++bad;
+      fail("non-finite velocity at node " + std::to_string(model.node_id[std::min(bad, n - 1)]) +
            " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
       break;
     }
