@@ -25,6 +25,26 @@ void gather(const core::SolidBlock& b, std::size_t e, const double* x, const dou
   }
 }
 
+// Current coordinates and velocities of element e's nodes, from the packed copy when given.
+void gather_state(const core::SolidBlock& b, std::size_t e, const NodalView& nv, HexCoords& c,
+                  HexCoords& v) {
+  if (nv.packed == nullptr) {
+    gather(b, e, nv.x, nv.y, nv.z, c);
+    gather(b, e, nv.vx, nv.vy, nv.vz, v);
+    return;
+  }
+  const core::Index* n = &b.connectivity[8 * e];
+  for (int i = 0; i < 8; ++i) {
+    const double* p = nv.packed + 6 * static_cast<std::size_t>(n[i]);
+    c.x[i] = p[0];
+    c.y[i] = p[1];
+    c.z[i] = p[2];
+    v.x[i] = p[3];
+    v.y[i] = p[4];
+    v.z[i] = p[5];
+  }
+}
+
 // Per-chunk scratch: kinematics at each point, in structure-of-arrays form for the material.
 struct PointScratch {
   double d[6][kChunk];
@@ -376,8 +396,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;
       HexCoords cur, v;
-      gather(block, e, nv.x, nv.y, nv.z, cur);
-      gather(block, e, nv.vx, nv.vy, nv.vz, v);
+      gather_state(block, e, nv, cur, v);
       if (!gauss_gradients(cur, gg[k]) || !uniform_gradient(cur, mean[k])) {
         r.failed = true;
         r.failed_element = e;

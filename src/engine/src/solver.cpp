@@ -137,6 +137,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   // Element forces at the current positions; the nodal force arrays must be zero and the packed
   // copy current (the node pass of the time loop does both).
   double bad_velocities = 0.0;
+  std::vector<std::array<double, 3>> free_velocity(bc.constrained_nodes().size());
   const auto internal = [&](double dt) {
 #pragma omp parallel
     {
@@ -217,65 +218,108 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const double dt_floor = floor_ratio * dt;
 
   bc.loads(0.0, s);
+  // v_{n+1/2} of the last velocity update, and w such that v_{n+1} = old + (v - old) w.
   std::vector<double> old_x(n), old_y(n), old_z(n);
+  double w_full = 0.0;
   const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
   const std::vector<unsigned char>& constrained = bc.constrained();
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
+  std::vector<double> saved_f(3 * constrained_nodes.size());
 
-  // Velocity update of the step [t, t + dt_next] with its half-step interval dt_avg, in one
-  // pass over the nodes: the work of the forces at t over the step just taken (second half of
-  // the trapezoid, `dt_prev`), v_{n+1/2} kept in old, v_{n+3/2} = old + a dt_avg, v_{n+1}, and
-  // a count of non-finite velocities. Then constraints and reactions on the constrained nodes.
-  // Returns {internal work, external work} of that half.
+  // The node arrays that only outputs read are brought up to date on demand: positions
+  // x = x0 + u and velocities at t_{n+1}. The hot passes then touch fewer arrays (each extra
+  // stream costs, and many same-offset streams collide in the caches).
+  const auto sync = [&] {
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      s.x[i] = model.x0[i] + s.ux[i];
+      s.y[i] = model.y0[i] + s.uy[i];
+      s.z[i] = model.z0[i] + s.uz[i];
+      s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w_full;
+      s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w_full;
+      s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w_full;
+    }
+  };
+
+  // The trapezoidal work of the step to come, first half: known once v_{n+3/2} is.
+  double pending_internal = 0.0, pending_external = 0.0;
+
+  // Velocity update v_{n+3/2} = v_{n+1/2} + a_{n+1} dt_avg in one pass over the nodes, which
+  // also sums the work of the forces at t_{n+1} over the step just taken (dt_prev, second half
+  // of the trapezoid) and over the step to come (dt_next, first half), counts non-finite
+  // velocities and zeroes the forces for the next element pass; then constraints and
+  // reactions on the constrained nodes only, correcting their share of the sums.
+  // Returns {internal, external} work of the step just taken.
   const auto advance_velocity = [&](double t_now, double dt_prev, double dt_next,
                                     double dt_avg) -> std::array<double, 2> {
-    const double w = dt_prev / (2.0 * dt_avg);
-    const auto sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
+    w_full = dt_prev / (2.0 * dt_avg);
+    for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+      saved_f[3 * k] = s.fx[i];
+      saved_f[3 * k + 1] = s.fy[i];
+      saved_f[3 * k + 2] = s.fz[i];
+    }
+    const auto sums = deterministic_sums<5>(n, [&](std::size_t i, std::array<double, 5>& acc) {
       const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
-      acc[0] += vx * s.fx[i] + vy * s.fy[i] + vz * s.fz[i];
-      acc[1] += vx * s.ex[i] + vy * s.ey[i] + vz * s.ez[i];
+      const double fx = s.fx[i], fy = s.fy[i], fz = s.fz[i];
+      const double ex = s.ex[i], ey = s.ey[i], ez = s.ez[i];
+      const double h = inv_mass[i] * dt_avg;
+      const double nx = vx + (ex - fx) * h, ny = vy + (ey - fy) * h, nz = vz + (ez - fz) * h;
+      acc[0] += vx * fx + vy * fy + vz * fz;
+      acc[1] += nx * fx + ny * fy + nz * fz;
+      acc[2] += vx * ex + vy * ey + vz * ez;
+      acc[3] += nx * ex + ny * ey + nz * ez;
+      if (!std::isfinite(nx + ny + nz))
+        acc[4] += 1.0;
       old_x[i] = vx;
       old_y[i] = vy;
       old_z[i] = vz;
-      const double nx = vx + (s.ex[i] - s.fx[i]) * inv_mass[i] * dt_avg;
-      const double ny = vy + (s.ey[i] - s.fy[i]) * inv_mass[i] * dt_avg;
-      const double nz = vz + (s.ez[i] - s.fz[i]) * inv_mass[i] * dt_avg;
       s.vx[i] = nx;
       s.vy[i] = ny;
       s.vz[i] = nz;
-      s.vnx[i] = vx + (nx - vx) * w;
-      s.vny[i] = vy + (ny - vy) * w;
-      s.vnz[i] = vz + (nz - vz) * w;
-      if (!std::isfinite(nx + ny + nz))
-        acc[2] += 1.0;
+      s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
     });
-    bad_velocities = sums[2];
-    bc.constrain(t_now, dt_next, dt_avg, old, s);
-    double reaction_work = 0.0;  // in node order: deterministic
-    for (core::Index ci : constrained_nodes) {
-      const auto i = static_cast<std::size_t>(ci);
-      const unsigned char* c = &constrained[3 * i];
-      s.rx[i] = c[0] ? s.mass[i] * (s.vx[i] - old_x[i]) / dt_avg - (s.ex[i] - s.fx[i]) : 0.0;
-      s.ry[i] = c[1] ? s.mass[i] * (s.vy[i] - old_y[i]) / dt_avg - (s.ey[i] - s.fy[i]) : 0.0;
-      s.rz[i] = c[2] ? s.mass[i] * (s.vz[i] - old_z[i]) / dt_avg - (s.ez[i] - s.fz[i]) : 0.0;
-      reaction_work += old_x[i] * s.rx[i] + old_y[i] * s.ry[i] + old_z[i] * s.rz[i];
-      s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w;
-      s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w;
-      s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w;
+    bad_velocities = sums[4];
+    // Free velocities of the constrained nodes, before the constraints overwrite them.
+    std::vector<std::array<double, 3>>& free_v = free_velocity;
+    for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+      free_v[k] = {s.vx[i], s.vy[i], s.vz[i]};
     }
-    return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[1] + reaction_work)};
+    bc.constrain(t_now, dt_next, dt_avg, old, s);
+    double prev_ext = 0.0, next_int = 0.0, next_ext = 0.0;  // constrained nodes, in order
+    for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+      const unsigned char* c = &constrained[3 * i];
+      const double* f = &saved_f[3 * k];
+      const double e[3] = {s.ex[i], s.ey[i], s.ez[i]};
+      const double vo[3] = {old_x[i], old_y[i], old_z[i]};
+      const double vc[3] = {s.vx[i], s.vy[i], s.vz[i]};
+      double r[3];
+      for (int d = 0; d < 3; ++d) {
+        r[d] = c[d] ? s.mass[i] * (vc[d] - vo[d]) / dt_avg - (e[d] - f[d]) : 0.0;
+        prev_ext += vo[d] * r[d];
+        next_ext += vc[d] * r[d] + (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * e[d];
+        next_int += (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * f[d];
+      }
+      s.rx[i] = r[0];
+      s.ry[i] = r[1];
+      s.rz[i] = r[2];
+    }
+    pending_internal = 0.5 * dt_next * (sums[1] + next_int);
+    pending_external = 0.5 * dt_next * (sums[3] + next_ext);
+    return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[2] + prev_ext)};
   };
   const auto kinetic = [&] {
+    sync();
     return 0.5 * deterministic_sum(n, [&](std::size_t i) {
              return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]);
            });
   };
 
-  // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones.
+  // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
-  s.vnx = old_x;
-  s.vny = old_y;
-  s.vnz = old_z;
   const double kinetic0 = kinetic();
   double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
   double hourglass = 0.0;
@@ -300,7 +344,13 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   bool state_written = false;
   const auto write_outputs = [&](bool last) {
     state_written = false;
-    if (t + eps_t >= next_state || last) {
+    const bool want_state = t + eps_t >= next_state || last;
+    const bool want_glstat = out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last);
+    const bool want_nodout =
+        out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last);
+    if (want_state || want_nodout)
+      sync();
+    if (want_state) {
       sink.state(snapshot());
       state_written = true;
       if (out.d3plot_dt > 0.0) {
@@ -310,12 +360,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         next_state = end_time;  // first and last only
       }
     }
-    if (out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last)) {
+    if (want_glstat) {
       sink.glstat(energies());
       while (next_glstat <= t + eps_t)
         next_glstat += out.glstat_dt;
     }
-    if (out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last)) {
+    if (want_nodout) {
       sink.nodout(snapshot());
       while (next_nodout <= t + eps_t)
         next_nodout += out.nodout_dt;
@@ -328,31 +378,31 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       break;
     if (model.controls.end_cycle > 0 && cycle >= model.controls.end_cycle)
       break;
-    // One pass over the nodes: work of the forces at t_n over the step (first half of the
-    // trapezoid), positions at t_{n+1}, the packed copy for the elements, zeroed forces.
-    const auto work = deterministic_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
+    work_internal += pending_internal;
+    work_external += pending_external;
+    // Positions at t_{n+1} and the packed copy the elements gather from.
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
       const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
-      acc[0] += vx * s.fx[i] + vy * s.fy[i] + vz * s.fz[i];
-      acc[1] += vx * (s.ex[i] + s.rx[i]) + vy * (s.ey[i] + s.ry[i]) + vz * (s.ez[i] + s.rz[i]);
-      s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
-      s.ux[i] += vx * dt;
-      s.uy[i] += vy * dt;
-      s.uz[i] += vz * dt;
+      const double ux = s.ux[i] + vx * dt, uy = s.uy[i] + vy * dt, uz = s.uz[i] + vz * dt;
+      s.ux[i] = ux;
+      s.uy[i] = uy;
+      s.uz[i] = uz;
       double* p = &packed[6 * i];
-      p[0] = s.x[i] = model.x0[i] + s.ux[i];
-      p[1] = s.y[i] = model.y0[i] + s.uy[i];
-      p[2] = s.z[i] = model.z0[i] + s.uz[i];
+      p[0] = model.x0[i] + ux;
+      p[1] = model.y0[i] + uy;
+      p[2] = model.z0[i] + uz;
       p[3] = vx;
       p[4] = vy;
       p[5] = vz;
-    });
-    work_internal += 0.5 * dt * work[0];
-    work_external += 0.5 * dt * work[1];
+    }
     t += dt;
     ++cycle;
 
     ir = internal(dt);
     if (ir.failed) {
+      sync();
       fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
            " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
       break;
@@ -362,6 +412,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
     double dt_next = tssfac * ir.dt_min;
     if (dt_next < dt_floor) {
+      sync();
       fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
            " at t = " + time_text(t) + ", set by " + element_name(ir.dt_block, ir.dt_element));
       break;
@@ -375,6 +426,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       std::size_t bad = 0;
       while (bad < n && std::isfinite(s.vx[bad] + s.vy[bad] + s.vz[bad]))
         ++bad;
+      sync();
       fail("non-finite velocity at node " + std::to_string(model.node_id[std::min(bad, n - 1)]) +
            " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
       break;

@@ -20,8 +20,9 @@ struct NodalView {
   const double *x, *y, *z;     ///< current coordinates (t_{n+1})
   const double *x0, *y0, *z0;  ///< reference coordinates
   const double *vx, *vy, *vz;  ///< velocities (t_{n+1/2})
-  /// Optional: x, y, z, vx, vy, vz of each node side by side (6 per node), the same values as
-  /// above; an element then gathers each node from one cache line instead of six.
+  /// Optional: x, y, z, vx, vy, vz of each node side by side (6 per node). When given, the
+  /// kernels read the current state from it only (x, y, z, vx, vy, vz above may be stale): an
+  /// element gathers each node from one cache line instead of six.
   const double* packed = nullptr;
 };
 
