@@ -1,5 +1,7 @@
 #include "plyform/core/material.hpp"
 
+#include <algorithm>
+
 namespace plyform::core {
 
 namespace {
@@ -20,6 +22,21 @@ Moduli moduli(const ElasticMaterial& m) {
 Moduli moduli(const MooneyRivlinMaterial& m) {
   const double g = 2.0 * (m.a + m.b);
   return {2.0 * g * (1.0 + m.poisson) / (3.0 * (1.0 - 2.0 * m.poisson)), g};
+}
+
+Moduli isotropic(double young, double poisson) {
+  return {young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson))};
+}
+Moduli moduli(const PiecewiseLinearPlasticity& m) { return isotropic(m.young, m.poisson); }
+Moduli moduli(const PowerLawPlasticity& m) { return isotropic(m.young, m.poisson); }
+Moduli moduli(const RigidMaterial& m) { return isotropic(m.young, m.poisson); }
+// Orthotropic: the stiffest direction bounds the wave speed (time step); the largest shear
+// modulus for hourglass scaling.
+Moduli moduli(const OrthotropicElasticMaterial& m) {
+  const double e = std::max(m.ea, std::max(m.eb, m.ec));
+  const double g = std::max(m.gab, std::max(m.gbc, m.gca));
+  const double nu = std::max(m.prba, std::max(m.prca, m.prcb));
+  return {e / (3.0 * (1.0 - 2.0 * std::min(nu, 0.45))), g};
 }
 
 }  // namespace

@@ -15,6 +15,11 @@ constexpr std::size_t kChunk = 32;  // points per material call: scratch stays i
 using core::ElasticMaterial;
 using core::MooneyRivlinMaterial;
 
+// The laws the solid kernels integrate.
+template <class M>
+constexpr bool solid_law =
+    std::is_same_v<M, ElasticMaterial> || std::is_same_v<M, MooneyRivlinMaterial>;
+
 void gather(const core::SolidBlock& b, std::size_t e, const double* x, const double* y,
             const double* z, HexCoords& c) {
   const core::Index* n = &b.connectivity[8 * e];
@@ -495,12 +500,25 @@ SolidResult solid_forces(const core::SolidBlock& block, const core::Material& ma
                          std::size_t begin, std::size_t end, const NodalForces& forces) {
   return std::visit(
       [&](const auto& m) {
-        if (block.formulation == core::SolidFormulation::one_point) {
-          return one_point(block, m, state, nodes, dt, begin, end, forces);
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (solid_law<M>) {
+          if (block.formulation == core::SolidFormulation::one_point) {
+            return one_point(block, m, state, nodes, dt, begin, end, forces);
+          }
+          return selective_reduced(block, m, state, nodes, dt, begin, end, forces);
+        } else {
+          // setup::build admits only the solid laws; reaching this is a programming error.
+          SolidResult r;
+          r.failed = true;
+          r.failed_element = begin;
+          return r;
         }
-        return selective_reduced(block, m, state, nodes, dt, begin, end, forces);
       },
       material);
+}
+
+bool supports_solids(const core::Material& material) {
+  return std::visit([](const auto& m) { return solid_law<std::decay_t<decltype(m)>>; }, material);
 }
 
 double solid_stable_dt(const core::SolidBlock& block, const core::Material& material,

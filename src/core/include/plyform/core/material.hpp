@@ -3,6 +3,7 @@
 // carries one, dispatched once per block.
 
 #include <variant>
+#include <vector>
 
 namespace plyform::core {
 
@@ -23,7 +24,62 @@ struct MooneyRivlinMaterial {
   double b = 0.0;
 };
 
-using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial>;
+/// Isotropic hardening curve of a plasticity law: yield stress against effective plastic
+/// strain, piecewise linear, extrapolated with the last slope.
+struct HardeningCurve {
+  std::vector<double> plastic_strain;
+  std::vector<double> yield_stress;
+};
+
+/// *MAT_PIECEWISE_LINEAR_PLASTICITY (024): J2 (von Mises) plasticity with isotropic hardening,
+/// the yield stress from `curve` when it has points, else bilinear SIGY + E_p eps_p with the
+/// plastic modulus E_p = E ETAN / (E - ETAN).
+struct PiecewiseLinearPlasticity {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  double sigy = 0.0;
+  double etan = 0.0;
+  HardeningCurve curve;
+};
+
+/// *MAT_POWER_LAW_PLASTICITY (018): J2 with sigma_y = k (eps_yp + eps_p)^n, eps_yp the strain
+/// at first yield: (sigy / k)^(1/n) when SIGY > 0, else the intersection (E / k)^(1/(n - 1)).
+struct PowerLawPlasticity {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  double k = 0.0;
+  double n = 0.0;
+  double sigy = 0.0;
+};
+
+/// *MAT_ORTHOTROPIC_ELASTIC (002): elastic constants in the material axes a, b, c. For shells
+/// the axes follow AOPT: 0 = the element's local axes (a along nodes 1-2), 2 = the global
+/// vector `a` projected on the shell (with `d` as LS-DYNA's second vector).
+struct OrthotropicElasticMaterial {
+  double density = 0.0;
+  double ea = 0.0, eb = 0.0, ec = 0.0;
+  double prba = 0.0, prca = 0.0, prcb = 0.0;
+  double gab = 0.0, gbc = 0.0, gca = 0.0;
+  int aopt = 0;
+  double a[3] = {1.0, 0.0, 0.0};
+  double d[3] = {0.0, 1.0, 0.0};
+};
+
+/// *MAT_RIGID (020): the part moves as one rigid body. E and nu only scale contact stiffness.
+/// CMO/CON1/CON2: the constraints of the body's centre of mass (LS-DYNA codes).
+struct RigidMaterial {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  double cmo = 0.0;
+  int con1 = 0;
+  int con2 = 0;
+};
+
+using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
+                              PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial>;
 
 /// Density of any material.
 [[nodiscard]] double density(const Material& m);

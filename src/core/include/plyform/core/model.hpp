@@ -41,6 +41,31 @@ struct SolidBlock {
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
 
+/// Shell formulations of *SECTION_SHELL.
+enum class ShellFormulation : int {
+  belytschko_tsay = 2,  ///< ELFORM 2: co-rotational, one in-plane point, hourglass control
+};
+
+/// Through-thickness integration rule of *SECTION_SHELL (QR/IRID).
+enum class ThicknessRule : int { gauss = 0, lobatto = 1 };
+
+/// Shell elements of one formulation, one material and one section: quadrilaterals, and
+/// triangles written as quadrilaterals with N3 = N4.
+struct ShellBlock {
+  ShellFormulation formulation = ShellFormulation::belytschko_tsay;
+  Index part = 0;
+  Index material = 0;
+  HourglassControl hourglass;
+  int nip = 2;  ///< integration points through the thickness
+  ThicknessRule rule = ThicknessRule::gauss;
+  double shear_factor = 5.0 / 6.0;  ///< SHRF
+  std::vector<GlobalId> element_id;
+  std::vector<Index> connectivity;  ///< 4 node indices per element
+  std::vector<double> thickness;    ///< initial thickness at the 4 nodes of each element
+  std::vector<std::size_t> colour_start;  ///< as SolidBlock::colour_start
+  [[nodiscard]] std::size_t size() const { return element_id.size(); }
+};
+
 struct Part {
   GlobalId id = 0;
   std::string title;
@@ -103,6 +128,7 @@ struct Model {
   std::vector<Part> parts;
   std::vector<Material> materials;
   std::vector<SolidBlock> solid_blocks;
+  std::vector<ShellBlock> shell_blocks;
   // Loads and constraints.
   std::vector<LoadCurve> curves;
   std::vector<FixedDofs> fixed;

@@ -61,6 +61,9 @@ SolidResult solid_forces(const core::SolidBlock& block, const core::Material& ma
                          SolidBlockState& state, const NodalView& nodes, double dt,
                          std::size_t begin, std::size_t end, const NodalForces& forces);
 
+/// True for the material laws the solid kernels integrate.
+bool supports_solids(const core::Material& material);
+
 /// The stable step of element e alone (geometry and material), for reports.
 double solid_stable_dt(const core::SolidBlock& block, const core::Material& material,
                        const NodalView& nodes, std::size_t e);
