@@ -102,6 +102,26 @@ struct NodalLoad {
   double scale = 1.0;
 };
 
+/// *BOUNDARY_PRESCRIBED_MOTION_RIGID: a rigid part's translation (dof 0-2) or rotation about a
+/// global axis through its centre of mass (dof 3-5).
+struct RigidMotion {
+  Index part = 0;  ///< index into Model::parts (a part with RigidMaterial)
+  int dof = 0;     ///< 0, 1, 2: x, y, z translation; 3, 4, 5: rotation about x, y, z
+  MotionKind kind = MotionKind::velocity;
+  Index curve = 0;
+  double scale = 1.0;
+  double birth = 0.0;
+  double death = 1e28;
+};
+
+/// *LOAD_RIGID_BODY: a force (dof 0-2) or moment (dof 3-5) on a rigid part's centre of mass.
+struct RigidLoad {
+  Index part = 0;
+  int dof = 0;
+  Index curve = 0;
+  double scale = 1.0;
+};
+
 struct Controls {
   double end_time = 0.0;    ///< *CONTROL_TERMINATION ENDTIM
   long end_cycle = 0;       ///< ENDCYC (0: none)
@@ -134,6 +154,8 @@ struct Model {
   std::vector<FixedDofs> fixed;
   std::vector<PrescribedMotion> motions;
   std::vector<NodalLoad> loads;
+  std::vector<RigidMotion> rigid_motions;
+  std::vector<RigidLoad> rigid_loads;
   std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)
   Controls controls;
   OutputRequests output;
