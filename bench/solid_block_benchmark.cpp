@@ -45,7 +45,7 @@ core::Model block(int nx, int ny, int nz, core::SolidFormulation form) {
   m.materials.push_back(core::ElasticMaterial{7.85e-9, 210000.0, 0.3});
   m.parts.push_back(core::Part{1, "block", 0});
   m.solid_blocks.push_back(std::move(b));
-  core::colour_solid_blocks(m);
+  core::colour_element_blocks(m);
   // A velocity field that deforms the block (not a rigid motion).
   const std::size_t n = m.node_count();
   m.v0x.assign(n, 0.0);

@@ -41,7 +41,7 @@ inline core::Model box(double lx, double ly, double lz, int nx, int ny, int nz,
   m.parts.push_back(core::Part{1, "box", 0});
   m.solid_blocks.push_back(std::move(b));
   m.controls.tssfac = 0.9;
-  core::colour_solid_blocks(m);
+  core::colour_element_blocks(m);
   return m;
 }
 

@@ -6,56 +6,79 @@
 #include "plyform/core/model.hpp"
 
 namespace plyform::core {
+namespace {
 
-bool colour_solid_blocks(Model& model) {
+// Greedy colouring in element order, then a stable reorder by colour of the block's per-element
+// arrays (`per_element` values each in `extra`), filling colour_start.
+template <int kNodes, class Block>
+bool colour_block(Block& b, std::size_t node_count, std::vector<double>* extra, int per_element) {
   constexpr int kWords = 2;  // up to 128 colours
+  const std::size_t n = b.size();
+  std::vector<std::array<std::uint64_t, kWords>> used(node_count, {0, 0});
+  std::vector<int> colour(n, 0);
+  int colours = 0;
+  for (std::size_t e = 0; e < n; ++e) {
+    std::array<std::uint64_t, kWords> taken{0, 0};
+    for (int i = 0; i < kNodes; ++i) {
+      const auto node =
+          static_cast<std::size_t>(b.connectivity[kNodes * e + static_cast<std::size_t>(i)]);
+      for (int w = 0; w < kWords; ++w)
+        taken[static_cast<std::size_t>(w)] |= used[node][static_cast<std::size_t>(w)];
+    }
+    int c = 0;
+    while (c < 64 * kWords && ((taken[static_cast<std::size_t>(c / 64)] >> (c % 64)) & 1u))
+      ++c;
+    if (c == 64 * kWords)
+      return false;
+    colour[e] = c;
+    colours = std::max(colours, c + 1);
+    for (int i = 0; i < kNodes; ++i) {
+      const auto node =
+          static_cast<std::size_t>(b.connectivity[kNodes * e + static_cast<std::size_t>(i)]);
+      used[node][static_cast<std::size_t>(c / 64)] |= std::uint64_t{1} << (c % 64);
+    }
+  }
+  // Stable reorder by colour (element order kept inside a colour, for locality).
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t c) { return colour[a] < colour[c]; });
+  std::vector<GlobalId> ids(n);
+  std::vector<Index> conn(kNodes * n);
+  std::vector<double> values(extra ? extra->size() : 0);
+  for (std::size_t k = 0; k < n; ++k) {
+    ids[k] = b.element_id[order[k]];
+    for (int i = 0; i < kNodes; ++i) {
+      conn[kNodes * k + static_cast<std::size_t>(i)] =
+          b.connectivity[kNodes * order[k] + static_cast<std::size_t>(i)];
+    }
+    for (int j = 0; extra && j < per_element; ++j) {
+      values[static_cast<std::size_t>(per_element) * k + static_cast<std::size_t>(j)] =
+          (*extra)[static_cast<std::size_t>(per_element) * order[k] + static_cast<std::size_t>(j)];
+    }
+  }
+  b.element_id = std::move(ids);
+  b.connectivity = std::move(conn);
+  if (extra)
+    *extra = std::move(values);
+  b.colour_start.assign(static_cast<std::size_t>(colours) + 1, 0);
+  for (std::size_t e = 0; e < n; ++e)
+    ++b.colour_start[static_cast<std::size_t>(colour[e]) + 1];
+  for (std::size_t c = 1; c < b.colour_start.size(); ++c)
+    b.colour_start[c] += b.colour_start[c - 1];
+  return true;
+}
+
+}  // namespace
+
+bool colour_element_blocks(Model& model) {
   for (SolidBlock& b : model.solid_blocks) {
-    const std::size_t n = b.size();
-    std::vector<std::array<std::uint64_t, kWords>> used(model.node_count(), {0, 0});
-    std::vector<int> colour(n, 0);
-    int colours = 0;
-    for (std::size_t e = 0; e < n; ++e) {
-      std::array<std::uint64_t, kWords> taken{0, 0};
-      for (int i = 0; i < 8; ++i) {
-        const auto node =
-            static_cast<std::size_t>(b.connectivity[8 * e + static_cast<std::size_t>(i)]);
-        for (int w = 0; w < kWords; ++w)
-          taken[w] |= used[node][w];
-      }
-      int c = 0;
-      while (c < 64 * kWords && (taken[c / 64] >> (c % 64) & 1u))
-        ++c;
-      if (c == 64 * kWords)
-        return false;
-      colour[e] = c;
-      colours = std::max(colours, c + 1);
-      for (int i = 0; i < 8; ++i) {
-        const auto node =
-            static_cast<std::size_t>(b.connectivity[8 * e + static_cast<std::size_t>(i)]);
-        used[node][c / 64] |= std::uint64_t{1} << (c % 64);
-      }
-    }
-    // Stable reorder by colour (element order kept inside a colour, for locality).
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t c) { return colour[a] < colour[c]; });
-    std::vector<GlobalId> ids(n);
-    std::vector<Index> conn(8 * n);
-    for (std::size_t k = 0; k < n; ++k) {
-      ids[k] = b.element_id[order[k]];
-      for (int i = 0; i < 8; ++i) {
-        conn[8 * k + static_cast<std::size_t>(i)] =
-            b.connectivity[8 * order[k] + static_cast<std::size_t>(i)];
-      }
-    }
-    b.element_id = std::move(ids);
-    b.connectivity = std::move(conn);
-    b.colour_start.assign(static_cast<std::size_t>(colours) + 1, 0);
-    for (std::size_t e = 0; e < n; ++e)
-      ++b.colour_start[static_cast<std::size_t>(colour[e]) + 1];
-    for (std::size_t c = 1; c < b.colour_start.size(); ++c)
-      b.colour_start[c] += b.colour_start[c - 1];
+    if (!colour_block<8>(b, model.node_count(), nullptr, 0))
+      return false;
+  }
+  for (ShellBlock& b : model.shell_blocks) {
+    if (!colour_block<4>(b, model.node_count(), &b.thickness, 4))
+      return false;
   }
   return true;
 }

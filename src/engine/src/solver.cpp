@@ -121,7 +121,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   for (const core::SolidBlock& b : model.solid_blocks) {
     if (b.colour_start.empty() || b.colour_start.back() != b.size()) {
       res.ok = false;
-      res.error = "internal error: solid blocks must be coloured (core::colour_solid_blocks)";
+      res.error = "internal error: element blocks must be coloured (core::colour_element_blocks)";
       return res;
     }
   }

@@ -279,7 +279,7 @@ BuildResult build(const model::ModelDesc& desc) {
   b.boundary_conditions();
   b.initial_velocities();
   b.controls_and_output();
-  if (!core::colour_solid_blocks(b.m)) {
+  if (!core::colour_element_blocks(b.m)) {
     b.error({desc.files_read.empty() ? std::string() : desc.files_read.front(), 0},
             "*ELEMENT_SOLID", "",
             "a node is shared by more solid elements than the element colouring supports (128)");

@@ -36,7 +36,7 @@ struct SolidBlock {
   /// Elements are ordered by colour: no two elements of a colour share a node, so a colour's
   /// elements add their forces to the nodes in parallel without races, and each node receives
   /// its contributions in colour order whatever the number of threads. Colour c is the range
-  /// [colour_start[c], colour_start[c + 1]). Set by colour_solid_blocks().
+  /// [colour_start[c], colour_start[c + 1]). Set by colour_element_blocks().
   std::vector<std::size_t> colour_start;
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
@@ -164,9 +164,9 @@ struct Model {
   [[nodiscard]] std::size_t solid_count() const;
 };
 
-/// Reorders the elements of every solid block by colour (greedy, in element order) and fills
-/// SolidBlock::colour_start. Returns false when a node is shared by more elements than the
+/// Reorders the elements of every solid and shell block by colour (greedy, in element order)
+/// and fills colour_start. Returns false when a node is shared by more elements than the
 /// colouring supports (128 colours).
-bool colour_solid_blocks(Model& model);
+bool colour_element_blocks(Model& model);
 
 }  // namespace plyform::core

@@ -1,0 +1,67 @@
+#pragma once
+// The Belytschko-Lin-Tsay shell (LS-DYNA ELFORM 2): co-rotational, one in-plane integration
+// point, NIP points through the thickness, Mindlin transverse shear, viscous hourglass control.
+// Like the solid kernels it adds each element's nodal forces and moments straight to the
+// nodes, one colour at a time.
+
+#include <cstddef>
+#include <vector>
+
+#include "plyform/core/model.hpp"
+#include "plyform/element/solid_kernels.hpp"
+
+namespace plyform::element {
+
+/// Nodal moment accumulators (length node_count).
+struct NodalMoments {
+  double *mx, *my, *mz;
+};
+
+/// Angular velocities of the nodes at t_{n+1/2} (length node_count).
+struct NodalSpin {
+  const double *wx, *wy, *wz;
+};
+
+/// State of a shell block: stresses in the element's co-rotational frame at every
+/// through-thickness point (xx, yy, xy, yz, zx), effective plastic strain, current thickness.
+struct ShellBlockState {
+  int nip = 2;
+  std::vector<double> s[5];
+  std::vector<double> eps_p;
+  std::vector<double> thickness;  ///< per element
+  std::vector<double> dt_factor;  ///< mass scaling, as for solids
+  std::vector<double> area;       ///< current area per element
+
+  void resize(const core::ShellBlock& block);
+};
+
+/// Through-thickness integration points on [-1, 1] and their weights (sum 2).
+void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* weight);
+
+struct ShellResult {
+  double dt_min = 1e300;
+  std::size_t dt_element = 0;
+  double hourglass_energy = 0.0;
+  bool failed = false;  ///< a collapsed element (zero area or thickness)
+  std::size_t failed_element = 0;
+};
+
+/// Updates elements [begin, end) of `block` over `dt` and adds their internal forces and
+/// moments to the nodes ([begin, end) within one colour when threads share the arrays).
+ShellResult shell_forces(const core::ShellBlock& block, const core::Material& material,
+                         ShellBlockState& state, const NodalView& nodes, const NodalSpin& spin,
+                         double dt, std::size_t begin, std::size_t end, const NodalForces& forces,
+                         const NodalMoments& moments);
+
+/// Stable step of element e alone (LS-DYNA's shell length: area over the longest side), from
+/// the reference configuration.
+double shell_stable_dt(const core::ShellBlock& block, const core::Material& material,
+                       const NodalView& nodes, std::size_t e);
+
+/// Reference area of element e.
+double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes, std::size_t e);
+
+/// True for the material laws the shell kernel integrates.
+bool supports_shells(const core::Material& material);
+
+}  // namespace plyform::element

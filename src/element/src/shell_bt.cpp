@@ -1,0 +1,390 @@
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "plyform/element/shell_kernels.hpp"
+#include "plyform/material/constitutive.hpp"
+
+namespace plyform::element {
+namespace {
+
+constexpr int kMaxNip = 10;
+
+// Plane-stress moduli of an isotropic law: E and nu from its small-strain K and G.
+struct PlaneStress {
+  double e, nu, g;
+};
+PlaneStress plane_stress(const core::Material& m) {
+  const double k = core::bulk_modulus(m), g = core::shear_modulus(m);
+  const double e = 9.0 * k * g / (3.0 * k + g);
+  const double nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+  return {e, nu, g};
+}
+
+// Plate wave speed sqrt(E / (rho (1 - nu^2))) for the shell's stable step.
+double plate_wave_speed(const core::Material& m) {
+  const PlaneStress p = plane_stress(m);
+  return std::sqrt(p.e / (core::density(m) * (1.0 - p.nu * p.nu)));
+}
+
+template <class M>
+constexpr bool shell_law = std::is_same_v<M, core::ElasticMaterial>;
+
+// Strain increments and stresses of the points of one element, for the material call.
+struct Points {
+  double dxx[kMaxNip], dyy[kMaxNip], dxy[kMaxNip], dyz[kMaxNip], dzx[kMaxNip], dzz[kMaxNip];
+};
+
+// Isotropic elastic plane stress at the points (transverse shear with the shear factor already
+// in the increments).
+void update_points(const core::ElasticMaterial& m, int nip, const Points& p, double* sxx,
+                   double* syy, double* sxy, double* syz, double* szx, double* /*eps_p*/,
+                   double* dzz) {
+  const double e = m.young, nu = m.poisson;
+  const double c = e / (1.0 - nu * nu), g = e / (2.0 * (1.0 + nu));
+  for (int k = 0; k < nip; ++k) {
+    const double dsx = c * (p.dxx[k] + nu * p.dyy[k]);
+    const double dsy = c * (p.dyy[k] + nu * p.dxx[k]);
+    sxx[k] += dsx;
+    syy[k] += dsy;
+    sxy[k] += 2.0 * g * p.dxy[k];
+    syz[k] += 2.0 * g * p.dyz[k];
+    szx[k] += 2.0 * g * p.dzx[k];
+    dzz[k] = -nu / e * (dsx + dsy);
+  }
+}
+
+struct Geometry {
+  double e1[3], e2[3], e3[3];  // co-rotational frame
+  double xl[4], yl[4];         // local in-plane coordinates about the centroid
+  double b1[4], b2[4];         // dN/dx, dN/dy at the centre
+  double area;
+};
+
+bool geometry(const double x[4][3], Geometry& g) {
+  const double r31[3] = {x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
+  const double r42[3] = {x[3][0] - x[1][0], x[3][1] - x[1][1], x[3][2] - x[1][2]};
+  double n[3] = {r31[1] * r42[2] - r31[2] * r42[1], r31[2] * r42[0] - r31[0] * r42[2],
+                 r31[0] * r42[1] - r31[1] * r42[0]};
+  const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(nl > 0.0)) return false;
+  for (double& c : n) c /= nl;
+  // e1 along the mid-side vector from edge 4-1 to edge 2-3, projected on the plane.
+  double s1[3];
+  for (int d = 0; d < 3; ++d) s1[d] = 0.5 * (x[1][d] + x[2][d] - x[0][d] - x[3][d]);
+  const double sn = s1[0] * n[0] + s1[1] * n[1] + s1[2] * n[2];
+  for (int d = 0; d < 3; ++d) s1[d] -= sn * n[d];
+  const double sl = std::sqrt(s1[0] * s1[0] + s1[1] * s1[1] + s1[2] * s1[2]);
+  if (!(sl > 0.0)) return false;
+  for (int d = 0; d < 3; ++d) {
+    g.e1[d] = s1[d] / sl;
+    g.e3[d] = n[d];
+  }
+  g.e2[0] = n[1] * g.e1[2] - n[2] * g.e1[1];
+  g.e2[1] = n[2] * g.e1[0] - n[0] * g.e1[2];
+  g.e2[2] = n[0] * g.e1[1] - n[1] * g.e1[0];
+  double c[3] = {0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+    for (int d = 0; d < 3; ++d) c[d] += 0.25 * x[i][d];
+  for (int i = 0; i < 4; ++i) {
+    const double r[3] = {x[i][0] - c[0], x[i][1] - c[1], x[i][2] - c[2]};
+    g.xl[i] = r[0] * g.e1[0] + r[1] * g.e1[1] + r[2] * g.e1[2];
+    g.yl[i] = r[0] * g.e2[0] + r[1] * g.e2[1] + r[2] * g.e2[2];
+  }
+  g.area = 0.5 * ((g.xl[2] - g.xl[0]) * (g.yl[3] - g.yl[1]) +
+                  (g.xl[1] - g.xl[3]) * (g.yl[2] - g.yl[0]));
+  if (!(g.area > 0.0)) return false;
+  const double inv = 1.0 / (2.0 * g.area);
+  g.b1[0] = (g.yl[1] - g.yl[3]) * inv;
+  g.b1[1] = (g.yl[2] - g.yl[0]) * inv;
+  g.b1[2] = (g.yl[3] - g.yl[1]) * inv;
+  g.b1[3] = (g.yl[0] - g.yl[2]) * inv;
+  g.b2[0] = (g.xl[3] - g.xl[1]) * inv;
+  g.b2[1] = (g.xl[0] - g.xl[2]) * inv;
+  g.b2[2] = (g.xl[1] - g.xl[3]) * inv;
+  g.b2[3] = (g.xl[2] - g.xl[0]) * inv;
+  return true;
+}
+
+// LS-DYNA's shell length: the area over the longest side (triangles: twice the area).
+double characteristic_length(const double x[4][3], double area, bool triangle) {
+  double lmax = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    lmax = std::max(lmax, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  }
+  return lmax > 0.0 ? (triangle ? 2.0 : 1.0) * area / lmax : 0.0;
+}
+
+void rotate_in(const Geometry& g, const double v[3], double out[3]) {
+  out[0] = g.e1[0] * v[0] + g.e1[1] * v[1] + g.e1[2] * v[2];
+  out[1] = g.e2[0] * v[0] + g.e2[1] * v[1] + g.e2[2] * v[2];
+  out[2] = g.e3[0] * v[0] + g.e3[1] * v[1] + g.e3[2] * v[2];
+}
+
+template <class M>
+ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
+               const NodalView& nv, const NodalSpin& spin, double dt, std::size_t begin,
+               std::size_t end, const NodalForces& out, const NodalMoments& mom,
+               double wave_speed, double rho) {
+  ShellResult r;
+  const int nip = st.nip;
+  double zeta[kMaxNip], weight[kMaxNip];
+  thickness_rule(block.rule, nip, zeta, weight);
+  const double kappa = block.shear_factor;
+  const double qm = block.hourglass.qm;
+  const double h[4] = {1.0, -1.0, 1.0, -1.0};
+  Points p;
+  double dzz[kMaxNip];
+  for (std::size_t e = begin; e < end; ++e) {
+    const core::Index* conn = &block.connectivity[4 * e];
+    double x[4][3], v[4][3], w[4][3];
+    for (int i = 0; i < 4; ++i) {
+      const auto n = static_cast<std::size_t>(conn[i]);
+      const double* pk = nv.packed + 6 * n;
+      for (int d = 0; d < 3; ++d) {
+        x[i][d] = pk[d];
+        v[i][d] = pk[3 + d];
+      }
+      w[i][0] = spin.wx[n];
+      w[i][1] = spin.wy[n];
+      w[i][2] = spin.wz[n];
+    }
+    Geometry g;
+    const double t = st.thickness[e];
+    if (!geometry(x, g) || !(t > 0.0)) {
+      r.failed = true;
+      r.failed_element = e;
+      return r;
+    }
+    st.area[e] = g.area;
+    const bool triangle = conn[2] == conn[3];
+    const double dte = st.dt_factor[e] * characteristic_length(x, g.area, triangle) / wave_speed;
+    if (dte < r.dt_min) {
+      r.dt_min = dte;
+      r.dt_element = e;
+    }
+    double vl[4][3], wl[4][3];
+    for (int i = 0; i < 4; ++i) {
+      rotate_in(g, v[i], vl[i]);
+      rotate_in(g, w[i], wl[i]);
+    }
+    // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
+    // u_x = u + z theta_y, u_y = v - z theta_x).
+    double dxx = 0, dyy = 0, gxy = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
+    double thx = 0, thy = 0;
+    for (int i = 0; i < 4; ++i) {
+      dxx += g.b1[i] * vl[i][0];
+      dyy += g.b2[i] * vl[i][1];
+      gxy += g.b2[i] * vl[i][0] + g.b1[i] * vl[i][1];
+      kx += g.b1[i] * wl[i][1];
+      ky -= g.b2[i] * wl[i][0];
+      kxy += g.b2[i] * wl[i][1] - g.b1[i] * wl[i][0];
+      gxz += g.b1[i] * vl[i][2];
+      gyz += g.b2[i] * vl[i][2];
+      thx += 0.25 * wl[i][0];
+      thy += 0.25 * wl[i][1];
+    }
+    gxz += thy;
+    gyz -= thx;
+    // Strain increments at the thickness points (tensor shears; the shear factor scales the
+    // transverse shear).
+    for (int k = 0; k < nip; ++k) {
+      const double z = 0.5 * t * zeta[k];
+      p.dxx[k] = (dxx + z * kx) * dt;
+      p.dyy[k] = (dyy + z * ky) * dt;
+      p.dxy[k] = 0.5 * (gxy + z * kxy) * dt;
+      p.dyz[k] = 0.5 * kappa * gyz * dt;
+      p.dzx[k] = 0.5 * kappa * gxz * dt;
+    }
+    const std::size_t q0 = static_cast<std::size_t>(nip) * e;
+    update_points(mat, nip, p, &st.s[0][q0], &st.s[1][q0], &st.s[2][q0], &st.s[3][q0],
+                  &st.s[4][q0], &st.eps_p[q0], dzz);
+    // Resultants over the thickness, and the thickness update from the mean normal strain.
+    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
+    for (int k = 0; k < nip; ++k) {
+      const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
+      const std::size_t q = q0 + static_cast<std::size_t>(k);
+      nxx += wk * st.s[0][q];
+      nyy += wk * st.s[1][q];
+      nxy += wk * st.s[2][q];
+      mxx += wk * z * st.s[0][q];
+      myy += wk * z * st.s[1][q];
+      mxy += wk * z * st.s[2][q];
+      qy += wk * st.s[3][q];
+      qx += wk * st.s[4][q];
+      tz += 0.5 * weight[k] * dzz[k];
+    }
+    st.thickness[e] = t * (1.0 + tz);
+    const double a = g.area;
+    double fl[4][3], ml[4][2];
+    for (int i = 0; i < 4; ++i) {
+      fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);
+      fl[i][1] = a * (g.b2[i] * nyy + g.b1[i] * nxy);
+      fl[i][2] = a * (g.b1[i] * qx + g.b2[i] * qy);
+      ml[i][0] = -a * (g.b2[i] * myy + g.b1[i] * mxy) - 0.25 * a * qy;
+      ml[i][1] = a * (g.b1[i] * mxx + g.b2[i] * mxy) + 0.25 * a * qx;
+    }
+    if (qm > 0.0) {
+      // Viscous hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane
+      // and the two rotations, with gamma = h - (h . x) b1 - (h . y) b2 orthogonal to the
+      // linear fields.
+      double hx = 0, hy = 0;
+      for (int i = 0; i < 4; ++i) {
+        hx += h[i] * g.xl[i];
+        hy += h[i] * g.yl[i];
+      }
+      double gam[4];
+      for (int i = 0; i < 4; ++i) gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
+      double qv[5] = {0, 0, 0, 0, 0};
+      for (int i = 0; i < 4; ++i) {
+        qv[0] += gam[i] * vl[i][0];
+        qv[1] += gam[i] * vl[i][1];
+        qv[2] += gam[i] * vl[i][2];
+        qv[3] += gam[i] * wl[i][0];
+        qv[4] += gam[i] * wl[i][1];
+      }
+      const double sa = std::sqrt(a);
+      const double cm = 0.25 * qm * rho * wave_speed * t * sa;
+      const double cw = qm * rho * wave_speed * t * t * t / (12.0 * sa);
+      const double ct = qm * rho * wave_speed * t * t * t * sa / 48.0;
+      const double coef[5] = {cm, cm, cw, ct, ct};
+      double power = 0.0;
+      for (int j = 0; j < 5; ++j) power += coef[j] * qv[j] * qv[j];
+      r.hourglass_energy += power * dt;
+      for (int i = 0; i < 4; ++i) {
+        fl[i][0] += cm * qv[0] * gam[i];
+        fl[i][1] += cm * qv[1] * gam[i];
+        fl[i][2] += cw * qv[2] * gam[i];
+        ml[i][0] += ct * qv[3] * gam[i];
+        ml[i][1] += ct * qv[4] * gam[i];
+      }
+    }
+    // Back to global axes, added to the nodes (a triangle's fourth node is its third).
+    for (int i = 0; i < 4; ++i) {
+      const auto n = static_cast<std::size_t>(conn[i]);
+      for (int d = 0; d < 3; ++d) {
+        const double f = g.e1[d] * fl[i][0] + g.e2[d] * fl[i][1] + g.e3[d] * fl[i][2];
+        const double m = g.e1[d] * ml[i][0] + g.e2[d] * ml[i][1];
+        (d == 0 ? out.fx : d == 1 ? out.fy : out.fz)[n] += f;
+        (d == 0 ? mom.mx : d == 1 ? mom.my : mom.mz)[n] += m;
+      }
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* weight) {
+  if (rule == core::ThicknessRule::lobatto && nip >= 2) {
+    // Lobatto: the surfaces are integration points.
+    static const double kZ[6][6] = {{0},
+                                    {0},
+                                    {-1, 1},
+                                    {-1, 0, 1},
+                                    {-1, -0.447213595499958, 0.447213595499958, 1},
+                                    {-1, -0.654653670707977, 0, 0.654653670707977, 1}};
+    static const double kW[6][6] = {{0},
+                                    {0},
+                                    {1, 1},
+                                    {1.0 / 3, 4.0 / 3, 1.0 / 3},
+                                    {1.0 / 6, 5.0 / 6, 5.0 / 6, 1.0 / 6},
+                                    {0.1, 49.0 / 90, 32.0 / 45, 49.0 / 90, 0.1}};
+    for (int k = 0; k < nip; ++k) {
+      zeta[k] = kZ[nip][k];
+      weight[k] = kW[nip][k];
+    }
+    return;
+  }
+  static const double kZ[6][5] = {{0},
+                                  {0},
+                                  {-0.577350269189626, 0.577350269189626},
+                                  {-0.774596669241483, 0, 0.774596669241483},
+                                  {-0.861136311594053, -0.339981043584856, 0.339981043584856,
+                                   0.861136311594053},
+                                  {-0.906179845938664, -0.538469310105683, 0, 0.538469310105683,
+                                   0.906179845938664}};
+  static const double kW[6][5] = {{0},
+                                  {2},
+                                  {1, 1},
+                                  {5.0 / 9, 8.0 / 9, 5.0 / 9},
+                                  {0.347854845137454, 0.652145154862546, 0.652145154862546,
+                                   0.347854845137454},
+                                  {0.236926885056189, 0.478628670499366, 0.568888888888889,
+                                   0.478628670499366, 0.236926885056189}};
+  for (int k = 0; k < nip; ++k) {
+    zeta[k] = kZ[nip][k];
+    weight[k] = kW[nip][k];
+  }
+}
+
+void ShellBlockState::resize(const core::ShellBlock& block) {
+  nip = block.nip;
+  const std::size_t n = block.size();
+  for (auto& c : s) c.assign(n * static_cast<std::size_t>(nip), 0.0);
+  eps_p.assign(n * static_cast<std::size_t>(nip), 0.0);
+  thickness.resize(n);
+  for (std::size_t e = 0; e < n; ++e) {
+    const double* t = &block.thickness[4 * e];
+    thickness[e] = 0.25 * (t[0] + t[1] + t[2] + t[3]);
+  }
+  dt_factor.assign(n, 1.0);
+  area.assign(n, 0.0);
+}
+
+ShellResult shell_forces(const core::ShellBlock& block, const core::Material& material,
+                         ShellBlockState& state, const NodalView& nodes, const NodalSpin& spin,
+                         double dt, std::size_t begin, std::size_t end, const NodalForces& forces,
+                         const NodalMoments& moments) {
+  const double c = plate_wave_speed(material);
+  const double rho = core::density(material);
+  return std::visit(
+      [&](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (shell_law<M>) {
+          return bt(block, m, state, nodes, spin, dt, begin, end, forces, moments, c, rho);
+        } else {
+          ShellResult r;  // setup::build admits only the shell laws
+          r.failed = true;
+          r.failed_element = begin;
+          return r;
+        }
+      },
+      material);
+}
+
+bool supports_shells(const core::Material& material) {
+  return std::visit([](const auto& m) { return shell_law<std::decay_t<decltype(m)>>; }, material);
+}
+
+double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes,
+                            std::size_t e) {
+  double x[4][3];
+  for (int i = 0; i < 4; ++i) {
+    const auto n = static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
+    x[i][0] = nodes.x0[n];
+    x[i][1] = nodes.y0[n];
+    x[i][2] = nodes.z0[n];
+  }
+  Geometry g;
+  return geometry(x, g) ? g.area : 0.0;
+}
+
+double shell_stable_dt(const core::ShellBlock& block, const core::Material& material,
+                       const NodalView& nodes, std::size_t e) {
+  double x[4][3];
+  for (int i = 0; i < 4; ++i) {
+    const auto n = static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
+    x[i][0] = nodes.x0[n];
+    x[i][1] = nodes.y0[n];
+    x[i][2] = nodes.z0[n];
+  }
+  Geometry g;
+  if (!geometry(x, g)) return 0.0;
+  const bool triangle = block.connectivity[4 * e + 2] == block.connectivity[4 * e + 3];
+  return characteristic_length(x, g.area, triangle) / plate_wave_speed(material);
+}
+
+}  // namespace plyform::element
