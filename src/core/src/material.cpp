@@ -27,9 +27,15 @@ Moduli moduli(const MooneyRivlinMaterial& m) {
 Moduli isotropic(double young, double poisson) {
   return {young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson))};
 }
-Moduli moduli(const PiecewiseLinearPlasticity& m) { return isotropic(m.young, m.poisson); }
-Moduli moduli(const PowerLawPlasticity& m) { return isotropic(m.young, m.poisson); }
-Moduli moduli(const RigidMaterial& m) { return isotropic(m.young, m.poisson); }
+Moduli moduli(const PiecewiseLinearPlasticity& m) {
+  return isotropic(m.young, m.poisson);
+}
+Moduli moduli(const PowerLawPlasticity& m) {
+  return isotropic(m.young, m.poisson);
+}
+Moduli moduli(const RigidMaterial& m) {
+  return isotropic(m.young, m.poisson);
+}
 // Orthotropic: the stiffest direction bounds the wave speed (time step); the largest shear
 // modulus for hourglass scaling.
 Moduli moduli(const OrthotropicElasticMaterial& m) {

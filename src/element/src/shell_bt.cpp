@@ -67,15 +67,20 @@ bool geometry(const double x[4][3], Geometry& g) {
   double n[3] = {r31[1] * r42[2] - r31[2] * r42[1], r31[2] * r42[0] - r31[0] * r42[2],
                  r31[0] * r42[1] - r31[1] * r42[0]};
   const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (!(nl > 0.0)) return false;
-  for (double& c : n) c /= nl;
+  if (!(nl > 0.0))
+    return false;
+  for (double& c : n)
+    c /= nl;
   // e1 along the mid-side vector from edge 4-1 to edge 2-3, projected on the plane.
   double s1[3];
-  for (int d = 0; d < 3; ++d) s1[d] = 0.5 * (x[1][d] + x[2][d] - x[0][d] - x[3][d]);
+  for (int d = 0; d < 3; ++d)
+    s1[d] = 0.5 * (x[1][d] + x[2][d] - x[0][d] - x[3][d]);
   const double sn = s1[0] * n[0] + s1[1] * n[1] + s1[2] * n[2];
-  for (int d = 0; d < 3; ++d) s1[d] -= sn * n[d];
+  for (int d = 0; d < 3; ++d)
+    s1[d] -= sn * n[d];
   const double sl = std::sqrt(s1[0] * s1[0] + s1[1] * s1[1] + s1[2] * s1[2]);
-  if (!(sl > 0.0)) return false;
+  if (!(sl > 0.0))
+    return false;
   for (int d = 0; d < 3; ++d) {
     g.e1[d] = s1[d] / sl;
     g.e3[d] = n[d];
@@ -85,15 +90,17 @@ bool geometry(const double x[4][3], Geometry& g) {
   g.e2[2] = n[0] * g.e1[1] - n[1] * g.e1[0];
   double c[3] = {0, 0, 0};
   for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d) c[d] += 0.25 * x[i][d];
+    for (int d = 0; d < 3; ++d)
+      c[d] += 0.25 * x[i][d];
   for (int i = 0; i < 4; ++i) {
     const double r[3] = {x[i][0] - c[0], x[i][1] - c[1], x[i][2] - c[2]};
     g.xl[i] = r[0] * g.e1[0] + r[1] * g.e1[1] + r[2] * g.e1[2];
     g.yl[i] = r[0] * g.e2[0] + r[1] * g.e2[1] + r[2] * g.e2[2];
   }
-  g.area = 0.5 * ((g.xl[2] - g.xl[0]) * (g.yl[3] - g.yl[1]) +
-                  (g.xl[1] - g.xl[3]) * (g.yl[2] - g.yl[0]));
-  if (!(g.area > 0.0)) return false;
+  g.area =
+      0.5 * ((g.xl[2] - g.xl[0]) * (g.yl[3] - g.yl[1]) + (g.xl[1] - g.xl[3]) * (g.yl[2] - g.yl[0]));
+  if (!(g.area > 0.0))
+    return false;
   const double inv = 1.0 / (2.0 * g.area);
   g.b1[0] = (g.yl[1] - g.yl[3]) * inv;
   g.b1[1] = (g.yl[2] - g.yl[0]) * inv;
@@ -126,8 +133,8 @@ void rotate_in(const Geometry& g, const double v[3], double out[3]) {
 template <class M>
 ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                const NodalView& nv, const NodalSpin& spin, double dt, std::size_t begin,
-               std::size_t end, const NodalForces& out, const NodalMoments& mom,
-               double wave_speed, double rho) {
+               std::size_t end, const NodalForces& out, const NodalMoments& mom, double wave_speed,
+               double rho) {
   ShellResult r;
   const int nip = st.nip;
   double zeta[kMaxNip], weight[kMaxNip];
@@ -199,8 +206,8 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       p.dzx[k] = 0.5 * kappa * gxz * dt;
     }
     const std::size_t q0 = static_cast<std::size_t>(nip) * e;
-    update_points(mat, nip, p, &st.s[0][q0], &st.s[1][q0], &st.s[2][q0], &st.s[3][q0],
-                  &st.s[4][q0], &st.eps_p[q0], dzz);
+    update_points(mat, nip, p, &st.s[0][q0], &st.s[1][q0], &st.s[2][q0], &st.s[3][q0], &st.s[4][q0],
+                  &st.eps_p[q0], dzz);
     // Resultants over the thickness, and the thickness update from the mean normal strain.
     double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
     for (int k = 0; k < nip; ++k) {
@@ -236,7 +243,8 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         hy += h[i] * g.yl[i];
       }
       double gam[4];
-      for (int i = 0; i < 4; ++i) gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
+      for (int i = 0; i < 4; ++i)
+        gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
       double qv[5] = {0, 0, 0, 0, 0};
       for (int i = 0; i < 4; ++i) {
         qv[0] += gam[i] * vl[i][0];
@@ -251,7 +259,8 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       const double ct = qm * rho * wave_speed * t * t * t * sa / 48.0;
       const double coef[5] = {cm, cm, cw, ct, ct};
       double power = 0.0;
-      for (int j = 0; j < 5; ++j) power += coef[j] * qv[j] * qv[j];
+      for (int j = 0; j < 5; ++j)
+        power += coef[j] * qv[j] * qv[j];
       r.hourglass_energy += power * dt;
       for (int i = 0; i < 4; ++i) {
         fl[i][0] += cm * qv[0] * gam[i];
@@ -298,22 +307,21 @@ void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* wei
     }
     return;
   }
-  static const double kZ[6][5] = {{0},
-                                  {0},
-                                  {-0.577350269189626, 0.577350269189626},
-                                  {-0.774596669241483, 0, 0.774596669241483},
-                                  {-0.861136311594053, -0.339981043584856, 0.339981043584856,
-                                   0.861136311594053},
-                                  {-0.906179845938664, -0.538469310105683, 0, 0.538469310105683,
-                                   0.906179845938664}};
-  static const double kW[6][5] = {{0},
-                                  {2},
-                                  {1, 1},
-                                  {5.0 / 9, 8.0 / 9, 5.0 / 9},
-                                  {0.347854845137454, 0.652145154862546, 0.652145154862546,
-                                   0.347854845137454},
-                                  {0.236926885056189, 0.478628670499366, 0.568888888888889,
-                                   0.478628670499366, 0.236926885056189}};
+  static const double kZ[6][5] = {
+      {0},
+      {0},
+      {-0.577350269189626, 0.577350269189626},
+      {-0.774596669241483, 0, 0.774596669241483},
+      {-0.861136311594053, -0.339981043584856, 0.339981043584856, 0.861136311594053},
+      {-0.906179845938664, -0.538469310105683, 0, 0.538469310105683, 0.906179845938664}};
+  static const double kW[6][5] = {
+      {0},
+      {2},
+      {1, 1},
+      {5.0 / 9, 8.0 / 9, 5.0 / 9},
+      {0.347854845137454, 0.652145154862546, 0.652145154862546, 0.347854845137454},
+      {0.236926885056189, 0.478628670499366, 0.568888888888889, 0.478628670499366,
+       0.236926885056189}};
   for (int k = 0; k < nip; ++k) {
     zeta[k] = kZ[nip][k];
     weight[k] = kW[nip][k];
@@ -323,7 +331,8 @@ void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* wei
 void ShellBlockState::resize(const core::ShellBlock& block) {
   nip = block.nip;
   const std::size_t n = block.size();
-  for (auto& c : s) c.assign(n * static_cast<std::size_t>(nip), 0.0);
+  for (auto& c : s)
+    c.assign(n * static_cast<std::size_t>(nip), 0.0);
   eps_p.assign(n * static_cast<std::size_t>(nip), 0.0);
   thickness.resize(n);
   for (std::size_t e = 0; e < n; ++e) {
@@ -359,11 +368,11 @@ bool supports_shells(const core::Material& material) {
   return std::visit([](const auto& m) { return shell_law<std::decay_t<decltype(m)>>; }, material);
 }
 
-double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes,
-                            std::size_t e) {
+double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes, std::size_t e) {
   double x[4][3];
   for (int i = 0; i < 4; ++i) {
-    const auto n = static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
+    const auto n =
+        static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
     x[i][0] = nodes.x0[n];
     x[i][1] = nodes.y0[n];
     x[i][2] = nodes.z0[n];
@@ -376,13 +385,15 @@ double shell_stable_dt(const core::ShellBlock& block, const core::Material& mate
                        const NodalView& nodes, std::size_t e) {
   double x[4][3];
   for (int i = 0; i < 4; ++i) {
-    const auto n = static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
+    const auto n =
+        static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
     x[i][0] = nodes.x0[n];
     x[i][1] = nodes.y0[n];
     x[i][2] = nodes.z0[n];
   }
   Geometry g;
-  if (!geometry(x, g)) return 0.0;
+  if (!geometry(x, g))
+    return 0.0;
   const bool triangle = block.connectivity[4 * e + 2] == block.connectivity[4 * e + 3];
   return characteristic_length(x, g.area, triangle) / plate_wave_speed(material);
 }

@@ -60,8 +60,8 @@ struct ShellBlock {
   ThicknessRule rule = ThicknessRule::gauss;
   double shear_factor = 5.0 / 6.0;  ///< SHRF
   std::vector<GlobalId> element_id;
-  std::vector<Index> connectivity;  ///< 4 node indices per element
-  std::vector<double> thickness;    ///< initial thickness at the 4 nodes of each element
+  std::vector<Index> connectivity;        ///< 4 node indices per element
+  std::vector<double> thickness;          ///< initial thickness at the 4 nodes of each element
   std::vector<std::size_t> colour_start;  ///< as SolidBlock::colour_start
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
