@@ -1,0 +1,141 @@
+#pragma once
+// Isotropic hardening laws as small value types (the kernels are templates on them, so the law is
+// chosen once per block), and the scalar return-mapping solvers of J2 plasticity shared by the
+// solid (3D) and shell (plane-stress) updates. Private to plyform_material.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "plyform/core/material.hpp"
+
+namespace plyform::material::detail {
+
+/// sigma_y = sigy + hp eps_p.
+struct LinearHardening {
+  double sigy;
+  double hp;
+  [[nodiscard]] double value(double e) const { return sigy + hp * e; }
+  [[nodiscard]] double slope(double /*e*/) const { return hp; }
+};
+
+/// Piecewise linear (x_i, y_i), i < n, extrapolated with the end slopes; n = 1 is constant.
+struct TabulatedHardening {
+  const double* x;
+  const double* y;
+  std::size_t n;
+  // Segment i with x_i <= e < x_{i+1}, clamped to [0, n - 2].
+  [[nodiscard]] std::size_t segment(double e) const {
+    const std::size_t j = static_cast<std::size_t>(std::upper_bound(x, x + n, e) - x);
+    const std::size_t i = j == 0 ? 0 : j - 1;
+    return std::min(i, n - 2);
+  }
+  [[nodiscard]] double value(double e) const {
+    if (n == 1)
+      return y[0];
+    const std::size_t i = segment(e);
+    return y[i] + (y[i + 1] - y[i]) / (x[i + 1] - x[i]) * (e - x[i]);
+  }
+  [[nodiscard]] double slope(double e) const {
+    if (n == 1)
+      return 0.0;
+    const std::size_t i = segment(e);
+    return (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
+  }
+};
+
+/// sigma_y = k (e0 + eps_p)^n.
+struct PowerHardening {
+  double k;
+  double n;
+  double e0;
+  [[nodiscard]] double value(double e) const { return k * std::pow(e0 + e, n); }
+  [[nodiscard]] double slope(double e) const { return n * k * std::pow(e0 + e, n - 1.0); }
+};
+
+/// Calls f with the hardening of *MAT_024: the curve when it has points, else bilinear with
+/// E_p = E ETAN / (E - ETAN). The block's law is chosen here, once.
+template <class F>
+decltype(auto) with_hardening(const core::PiecewiseLinearPlasticity& m, F&& f) {
+  const auto& c = m.curve;
+  const std::size_t n = std::min(c.plastic_strain.size(), c.yield_stress.size());
+  if (n > 0)
+    return f(TabulatedHardening{c.plastic_strain.data(), c.yield_stress.data(), n});
+  return f(LinearHardening{m.sigy, m.young * m.etan / (m.young - m.etan)});
+}
+
+/// Calls f with the hardening of *MAT_018.
+template <class F>
+decltype(auto) with_hardening(const core::PowerLawPlasticity& m, F&& f) {
+  const double e0 =
+      m.sigy > 0.0 ? std::pow(m.sigy / m.k, 1.0 / m.n) : std::pow(m.young / m.k, 1.0 / (m.n - 1.0));
+  return f(PowerHardening{m.k, m.n, e0});
+}
+
+/// Root of a decreasing scalar function r on [lo, hi] with r(lo) > 0 >= r(hi): Newton from lo,
+/// falling back to bisection whenever a step leaves the bracket (kinks of piecewise curves).
+/// f(x, r, dr) evaluates r(x) and r'(x). Stops when |r| <= tol or the bracket is at round-off.
+template <class F>
+double solve_decreasing(F&& f, double lo, double hi, double tol) {
+  double x = lo;
+  for (int it = 0; it < 200; ++it) {
+    double r = 0.0, dr = 0.0;
+    f(x, r, dr);
+    if (std::abs(r) <= tol)
+      return x;
+    if (r > 0.0)
+      lo = x;
+    else
+      hi = x;
+    double xn = x - r / dr;
+    if (!(xn > lo && xn < hi))
+      xn = 0.5 * (lo + hi);
+    if (hi - lo <= 4e-16 * hi)
+      return xn;
+    x = xn;
+  }
+  return x;
+}
+
+/// 3D radial return: dlam >= 0 with q_tr - 3 G dlam = sigma_y(e_n + dlam), given
+/// q_tr > sigma_y(e_n). Bracket: for a nondecreasing curve dlam <= (q_tr - sigma_y(e_n)) / 3G.
+template <class H>
+double radial_return(const H& h, double three_g, double q_tr, double e_n, double sy_n) {
+  const double hi = (q_tr - sy_n) / three_g;
+  const double tol = 1e-14 * q_tr;
+  return solve_decreasing(
+      [&](double x, double& r, double& dr) {
+        r = q_tr - three_g * x - h.value(e_n + x);
+        dr = -three_g - h.slope(e_n + x);
+      },
+      0.0, hi, tol);
+}
+
+/// Plane-stress return (Simo-Taylor) in the variables p = sxx + syy, q = sxx - syy, t = sxy.
+/// With gamma = dlam / sigma_eq (dlam the effective plastic strain increment), the backward-Euler
+/// stress is p = p_tr / (1 + a gamma), (q, t) = (q_tr, t_tr) / (1 + b gamma),
+/// a = E / (2 (1 - nu)), b = 3 G, and sigma_eq^2(gamma) = A / (1 + a gamma)^2 + B / (1 + b gamma)^2
+/// with A = p_tr^2 / 4, B = 3 q_tr^2 / 4 + 3 t_tr^2. gamma solves
+/// r = sigma_eq^2 - sigma_y(e_n + gamma sigma_eq)^2 = 0. Returns gamma.
+template <class H>
+double plane_stress_return(const H& h, double a, double b, double big_a, double big_b, double e_n,
+                           double psi_tr, double sy_n) {
+  const double hi = (psi_tr / sy_n - 1.0) / std::min(a, b);
+  const double tol = 1e-15 * psi_tr * psi_tr;
+  return solve_decreasing(
+      [&](double g, double& r, double& dr) {
+        const double ua = 1.0 / (1.0 + a * g);
+        const double ub = 1.0 / (1.0 + b * g);
+        const double psi2 = big_a * ua * ua + big_b * ub * ub;
+        const double dpsi2 = -2.0 * (big_a * a * ua * ua * ua + big_b * b * ub * ub * ub);
+        const double psi = std::sqrt(psi2);
+        const double dpsi = 0.5 * dpsi2 / psi;
+        const double e = e_n + g * psi;
+        const double sy = h.value(e);
+        r = psi2 - sy * sy;
+        dr = dpsi2 - 2.0 * sy * h.slope(e) * (psi + g * dpsi);
+      },
+      0.0, hi, tol);
+}
+
+}  // namespace plyform::material::detail

@@ -1,0 +1,85 @@
+#include "plyform/material/plasticity.hpp"
+
+#include <cmath>
+
+#include "hardening.hpp"
+
+namespace plyform::material {
+
+double yield_stress(const core::PiecewiseLinearPlasticity& m, double eps_p) {
+  return detail::with_hardening(m, [&](const auto& h) { return h.value(eps_p); });
+}
+double yield_slope(const core::PiecewiseLinearPlasticity& m, double eps_p) {
+  return detail::with_hardening(m, [&](const auto& h) { return h.slope(eps_p); });
+}
+double yield_stress(const core::PowerLawPlasticity& m, double eps_p) {
+  return detail::with_hardening(m, [&](const auto& h) { return h.value(eps_p); });
+}
+double yield_slope(const core::PowerLawPlasticity& m, double eps_p) {
+  return detail::with_hardening(m, [&](const auto& h) { return h.slope(eps_p); });
+}
+double power_law_offset(const core::PowerLawPlasticity& m) {
+  return detail::with_hardening(m, [](const detail::PowerHardening& h) { return h.e0; });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3D J2 radial return. After the elastic Jaumann trial (elastic_jaumann, one vectorised pass),
+// each point with q_tr = sqrt(3/2 s_tr : s_tr) > sigma_y(eps_p) is returned along the trial
+// deviator: s = s_tr (1 - 3 G dlam / q_tr), q = q_tr - 3 G dlam = sigma_y(eps_p + dlam)
+// (backward Euler with the normal n = 3/2 s / q, which the radial return keeps fixed).
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+template <class H>
+void radial_return_kernel(const H& h, double three_g, std::size_t n, double* __restrict sxx,
+                          double* __restrict syy, double* __restrict szz, double* __restrict sxy,
+                          double* __restrict syz, double* __restrict szx,
+                          double* __restrict eps_p) {
+  for (std::size_t p = 0; p < n; ++p) {
+    const double mean = (sxx[p] + syy[p] + szz[p]) / 3.0;
+    const double dxx = sxx[p] - mean, dyy = syy[p] - mean, dzz = szz[p] - mean;
+    const double ss = dxx * dxx + dyy * dyy + dzz * dzz +
+                      2.0 * (sxy[p] * sxy[p] + syz[p] * syz[p] + szx[p] * szx[p]);
+    const double q_tr = std::sqrt(1.5 * ss);
+    const double sy_n = h.value(eps_p[p]);
+    if (!(q_tr > sy_n))
+      continue;
+    const double dlam = detail::radial_return(h, three_g, q_tr, eps_p[p], sy_n);
+    const double f = 1.0 - three_g * dlam / q_tr;
+    sxx[p] = mean + f * dxx;
+    syy[p] = mean + f * dyy;
+    szz[p] = mean + f * dzz;
+    sxy[p] *= f;
+    syz[p] *= f;
+    szx[p] *= f;
+    eps_p[p] += dlam;
+  }
+}
+
+template <class Law>
+void solid_j2(const Law& m, std::size_t n, ConstSymView d, const double* w_xy, const double* w_yz,
+              const double* w_zx, double dt, SymView sigma, double* eps_p) {
+  elastic_jaumann(core::ElasticMaterial{m.density, m.young, m.poisson}, n, d, w_xy, w_yz, w_zx, dt,
+                  sigma);
+  const double three_g = 1.5 * m.young / (1.0 + m.poisson);
+  detail::with_hardening(m, [&](const auto& h) {
+    radial_return_kernel(h, three_g, n, sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz, sigma.zx,
+                         eps_p);
+  });
+}
+
+}  // namespace
+
+void solid_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, ConstSymView d,
+                  const double* w_xy, const double* w_yz, const double* w_zx, double dt,
+                  SymView sigma, double* eps_p) {
+  solid_j2(m, n, d, w_xy, w_yz, w_zx, dt, sigma, eps_p);
+}
+
+void solid_update(const core::PowerLawPlasticity& m, std::size_t n, ConstSymView d,
+                  const double* w_xy, const double* w_yz, const double* w_zx, double dt,
+                  SymView sigma, double* eps_p) {
+  solid_j2(m, n, d, w_xy, w_yz, w_zx, dt, sigma, eps_p);
+}
+
+}  // namespace plyform::material

@@ -1,0 +1,156 @@
+#include "plyform/material/shell.hpp"
+
+#include <cmath>
+
+#include "hardening.hpp"
+
+namespace plyform::material {
+
+// ---------------------------------------------------------------------------------------------
+// Isotropic plane stress. The elastic step (one vectorised pass) is shared by the elastic law and
+// the trial of the plastic laws:
+//   d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy = E/(1 - nu^2) (dyy + nu dxx), d sxy = 2 G dxy,
+//   d syz = 2 G dyz, d szx = 2 G dzx, dzz = -nu/(1 - nu) (dxx + dyy) = -(nu/E)(d sxx + d syy).
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+void plane_stress_elastic_kernel(std::size_t n, double c11, double c12, double two_g, double nu_zz,
+                                 const double* __restrict dxx, const double* __restrict dyy,
+                                 const double* __restrict dxy, const double* __restrict dyz,
+                                 const double* __restrict dzx, double* __restrict sxx,
+                                 double* __restrict syy, double* __restrict sxy,
+                                 double* __restrict syz, double* __restrict szx,
+                                 double* __restrict dzz) {
+  for (std::size_t p = 0; p < n; ++p) {
+    sxx[p] += c11 * dxx[p] + c12 * dyy[p];
+    syy[p] += c12 * dxx[p] + c11 * dyy[p];
+    sxy[p] += two_g * dxy[p];
+    syz[p] += two_g * dyz[p];
+    szx[p] += two_g * dzx[p];
+    dzz[p] = -nu_zz * (dxx[p] + dyy[p]);
+  }
+}
+
+void plane_stress_elastic(double young, double nu, std::size_t n, const ShellPoints& s) {
+  const double c11 = young / (1.0 - nu * nu);
+  plane_stress_elastic_kernel(n, c11, nu * c11, young / (1.0 + nu), nu / (1.0 - nu), s.dxx, s.dyy,
+                              s.dxy, s.dyz, s.dzx, s.sxx, s.syy, s.sxy, s.syz, s.szx, s.dzz);
+}
+
+// Plane-stress J2 return (Simo-Taylor), per point after the elastic trial. In p = sxx + syy,
+// q = sxx - syy, t = sxy the plane-stress elasticity and the flow d eps^p = dlam 3/2 s / sigma_eq
+// (s the deviator of (sxx, syy, sxy, szz = 0)) decouple:
+//   d eps^p_xx + d eps^p_yy = gamma p / 2,  d eps^p_xx - d eps^p_yy = 3/2 gamma q,
+//   d eps^p_xy = 3/2 gamma t,  gamma = dlam / sigma_eq,
+// and with p = E/(1 - nu) (eps_xx + eps_yy)^e, q = 2 G (eps_xx - eps_yy)^e, t = 2 G eps_xy^e the
+// backward-Euler stress is p = p_tr / (1 + a gamma), (q, t) = (q_tr, t_tr) / (1 + b gamma),
+// a = E / (2 (1 - nu)), b = 3 G; sigma_eq^2 = p^2 / 4 + 3 q^2 / 4 + 3 t^2. The scalar gamma
+// solves sigma_eq(gamma)^2 = sigma_y(eps_p + gamma sigma_eq(gamma))^2 (detail::
+// plane_stress_return). The return changes p by p - p_tr, so the elastic thickness strain of
+// the trial is corrected by -(nu/E)(p - p_tr), and the plastic part is
+// d eps^p_zz = -(d eps^p_xx + d eps^p_yy) = -gamma p / 2.
+template <class H>
+void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t n,
+                                double* __restrict sxx, double* __restrict syy,
+                                double* __restrict sxy, double* __restrict eps_p,
+                                double* __restrict dzz) {
+  const double a = 0.5 * young / (1.0 - nu);
+  const double b = 1.5 * young / (1.0 + nu);
+  const double nu_e = nu / young;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double x = sxx[p], y = syy[p], t = sxy[p];
+    const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+    const double sy_n = h.value(eps_p[p]);
+    if (!(psi2 > sy_n * sy_n))
+      continue;
+    const double p_tr = x + y, q_tr = x - y;
+    const double big_a = 0.25 * p_tr * p_tr;
+    const double big_b = 0.75 * q_tr * q_tr + 3.0 * t * t;
+    const double g =
+        detail::plane_stress_return(h, a, b, big_a, big_b, eps_p[p], std::sqrt(psi2), sy_n);
+    const double ua = 1.0 / (1.0 + a * g), ub = 1.0 / (1.0 + b * g);
+    const double pp = p_tr * ua, qq = q_tr * ub;
+    sxx[p] = 0.5 * (pp + qq);
+    syy[p] = 0.5 * (pp - qq);
+    sxy[p] = t * ub;
+    eps_p[p] += g * std::sqrt(big_a * ua * ua + big_b * ub * ub);
+    dzz[p] += -nu_e * (pp - p_tr) - 0.5 * g * pp;
+  }
+}
+
+template <class Law>
+void shell_j2(const Law& m, std::size_t n, const ShellPoints& s) {
+  plane_stress_elastic(m.young, m.poisson, n, s);
+  detail::with_hardening(m, [&](const auto& h) {
+    plane_stress_return_kernel(h, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p, s.dzz);
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Orthotropic plane stress in the material axes (a at angle t from x, b = n x a, c = n).
+// Strains to the material axes (tensor shear), c = cos t, s = sin t:
+//   e_a = c^2 e_xx + s^2 e_yy + 2 c s e_xy,  e_b = s^2 e_xx + c^2 e_yy - 2 c s e_xy,
+//   e_ab = c s (e_yy - e_xx) + (c^2 - s^2) e_xy,  e_ca = c e_zx + s e_yz,  e_bc = c e_yz - s e_zx.
+// Reduced stiffness (sigma_c = 0), with the compliance S_aa = 1/EA, S_bb = 1/EB,
+// S_ab = -PRBA/EB: Q_aa = EA / D, Q_bb = EB / D, Q_ab = PRBA EA / D, D = 1 - PRBA^2 EA / EB;
+// s_ab = 2 GAB e_ab, s_ca = 2 GCA e_ca, s_bc = 2 GBC e_bc. Back to x, y:
+//   s_xx = c^2 s_a + s^2 s_b - 2 c s s_ab,  s_yy = s^2 s_a + c^2 s_b + 2 c s s_ab,
+//   s_xy = c s (s_a - s_b) + (c^2 - s^2) s_ab,  s_zx = c s_ca - s s_bc,  s_yz = s s_ca + c s_bc.
+// Thickness: e_c = S_ca s_a + S_cb s_b = -(PRCA/EC) s_a - (PRCB/EC) s_b.
+// ---------------------------------------------------------------------------------------------
+struct OrthoConstants {
+  double qaa, qbb, qab, two_gab, two_gca, two_gbc, sca, scb;
+};
+
+void orthotropic_kernel(std::size_t n, OrthoConstants k, const double* __restrict cos_t,
+                        const double* __restrict sin_t, const double* __restrict dxx,
+                        const double* __restrict dyy, const double* __restrict dxy,
+                        const double* __restrict dyz, const double* __restrict dzx,
+                        double* __restrict sxx, double* __restrict syy, double* __restrict sxy,
+                        double* __restrict syz, double* __restrict szx, double* __restrict dzz) {
+  for (std::size_t p = 0; p < n; ++p) {
+    const double c = cos_t[p], s = sin_t[p];
+    const double cc = c * c, ss = s * s, cs = c * s;
+    const double ea = cc * dxx[p] + ss * dyy[p] + 2.0 * cs * dxy[p];
+    const double eb = ss * dxx[p] + cc * dyy[p] - 2.0 * cs * dxy[p];
+    const double eab = cs * (dyy[p] - dxx[p]) + (cc - ss) * dxy[p];
+    const double eca = c * dzx[p] + s * dyz[p];
+    const double ebc = c * dyz[p] - s * dzx[p];
+    const double sa = k.qaa * ea + k.qab * eb;
+    const double sb = k.qab * ea + k.qbb * eb;
+    const double sab = k.two_gab * eab;
+    const double sca = k.two_gca * eca;
+    const double sbc = k.two_gbc * ebc;
+    sxx[p] += cc * sa + ss * sb - 2.0 * cs * sab;
+    syy[p] += ss * sa + cc * sb + 2.0 * cs * sab;
+    sxy[p] += cs * (sa - sb) + (cc - ss) * sab;
+    szx[p] += c * sca - s * sbc;
+    syz[p] += s * sca + c * sbc;
+    dzz[p] = k.sca * sa + k.scb * sb;
+  }
+}
+
+}  // namespace
+
+void shell_update(const core::ElasticMaterial& m, std::size_t n, const ShellPoints& pts) {
+  plane_stress_elastic(m.young, m.poisson, n, pts);
+}
+
+void shell_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, const ShellPoints& pts) {
+  shell_j2(m, n, pts);
+}
+
+void shell_update(const core::PowerLawPlasticity& m, std::size_t n, const ShellPoints& pts) {
+  shell_j2(m, n, pts);
+}
+
+void shell_update(const core::OrthotropicElasticMaterial& m, std::size_t n, const ShellPoints& pts,
+                  const double* cos_t, const double* sin_t) {
+  const double den = 1.0 - m.prba * m.prba * m.ea / m.eb;
+  const OrthoConstants k{m.ea / den,  m.eb / den,  m.prba * m.ea / den, 2.0 * m.gab,
+                         2.0 * m.gca, 2.0 * m.gbc, -m.prca / m.ec,      -m.prcb / m.ec};
+  orthotropic_kernel(n, k, cos_t, sin_t, pts.dxx, pts.dyy, pts.dxy, pts.dyz, pts.dzx, pts.sxx,
+                     pts.syy, pts.sxy, pts.syz, pts.szx, pts.dzz);
+}
+
+}  // namespace plyform::material
