@@ -90,8 +90,8 @@ double solve_decreasing(F&& f, double lo, double hi, double tol) {
     double xn = x - r / dr;
     if (!(xn > lo && xn < hi))
       xn = 0.5 * (lo + hi);
-    if (hi - lo <= 4e-16 * hi)
-      return xn;
+    if (hi - lo <= 4e-16 * hi || std::abs(xn - x) <= 1e-16 * x)
+      return xn;  // bracket or Newton step at round-off
     x = xn;
   }
   return x;
