@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "plyform/core/model.hpp"
+#include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 
 namespace plyform::engine {
@@ -16,8 +17,12 @@ struct MassResult {
 /// Fills `mass` (node_count) with rho V0 / 8 per element node. With DT2MS != 0, elements whose
 /// stable step times TSSFAC is below TSSFAC |DT2MS| get their density raised so that it is not
 /// (mass added, never removed).
-/// `solids` receive each element's step factor sqrt(scale) in SolidBlockState::dt_factor.
+/// `solids` and `shells` receive each element's step factor sqrt(scale) in dt_factor. Shell
+/// nodes also get a rotary inertia m (t^2 + A) / 12 per element share (LS-DYNA's scaling, so
+/// that rotations do not govern the step).
 MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes,
-                       std::vector<double>& mass, std::vector<element::SolidBlockState>& solids);
+                       std::vector<double>& mass, std::vector<double>& inertia,
+                       std::vector<element::SolidBlockState>& solids,
+                       std::vector<element::ShellBlockState>& shells);
 
 }  // namespace plyform::engine

@@ -20,32 +20,50 @@ namespace {
 // loop. Items of one phase (block, colour) share no node and run in parallel; phases run in
 // order, so each node sums its forces in the same order for any number of threads.
 struct WorkItem {
+  bool shell;  ///< a shell block (else a solid block)
   std::size_t block, begin, end;
 };
 
-std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
+template <class Block>
+void add_phases(const std::vector<Block>& blocks, bool shell,
+                std::vector<std::vector<WorkItem>>& phases) {
   constexpr std::size_t kItem = 256;
-  std::vector<std::vector<WorkItem>> phases;
-  for (std::size_t b = 0; b < model.solid_blocks.size(); ++b) {
-    const std::vector<std::size_t>& start = model.solid_blocks[b].colour_start;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const std::vector<std::size_t>& start = blocks[b].colour_start;
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       std::vector<WorkItem> phase;
       for (std::size_t e = start[c]; e < start[c + 1]; e += kItem) {
-        phase.push_back({b, e, std::min(start[c + 1], e + kItem)});
+        phase.push_back({shell, b, e, std::min(start[c + 1], e + kItem)});
       }
-      if (!phase.empty())
-        phases.push_back(std::move(phase));
+      if (!phase.empty()) phases.push_back(std::move(phase));
     }
   }
+}
+
+std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
+  std::vector<std::vector<WorkItem>> phases;
+  add_phases(model.solid_blocks, false, phases);
+  add_phases(model.shell_blocks, true, phases);
   return phases;
 }
 
 struct InternalResult {
   double dt_min = 1e300;
-  std::size_t dt_block = 0, dt_element = 0;
+  WorkItem dt_item{};
+  std::size_t dt_element = 0;
   double hourglass = 0.0;
   bool failed = false;
-  std::size_t failed_block = 0, failed_element = 0;
+  WorkItem failed_item{};
+  std::size_t failed_element = 0;
+};
+
+// What one work item reports (solid or shell kernel).
+struct ItemResult {
+  double dt_min = 1e300;
+  std::size_t dt_element = 0;
+  double hourglass_energy = 0.0;
+  bool failed = false;
+  std::size_t failed_element = 0;
 };
 
 std::string time_text(double t) {
@@ -99,11 +117,17 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   std::vector<element::SolidBlockState> solids(model.solid_blocks.size());
   for (std::size_t b = 0; b < solids.size(); ++b)
     solids[b].resize(model.solid_blocks[b]);
+  std::vector<element::ShellBlockState> shells(model.shell_blocks.size());
+  for (std::size_t b = 0; b < shells.size(); ++b)
+    shells[b].resize(model.shell_blocks[b]);
 
-  const MassResult mass = lumped_mass(model, view, s.mass, solids);
+  const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
   res.physical_mass = mass.physical;
   res.added_mass = mass.added;
-  std::vector<double> inv_mass(n, 0.0);
+  std::vector<double> inv_mass(n, 0.0), inv_inertia(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.inertia[i] > 0.0) inv_inertia[i] = 1.0 / s.inertia[i];
+  }
   std::size_t massless = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (s.mass[i] > 0.0) {
@@ -118,8 +142,14 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   }
 
   const BoundaryConditions bc(model);
-  for (const core::SolidBlock& b : model.solid_blocks) {
-    if (b.colour_start.empty() || b.colour_start.back() != b.size()) {
+  const auto coloured = [](const auto& b) {
+    return !b.colour_start.empty() && b.colour_start.back() == b.size();
+  };
+  bool all_coloured = true;
+  for (const auto& b : model.solid_blocks) all_coloured = all_coloured && coloured(b);
+  for (const auto& b : model.shell_blocks) all_coloured = all_coloured && coloured(b);
+  {
+    if (!all_coloured) {
       res.ok = false;
       res.error = "internal error: element blocks must be coloured (core::colour_element_blocks)";
       return res;
@@ -130,9 +160,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   for (std::size_t p = 0; p < phases.size(); ++p) {
     phase_offset[p + 1] = phase_offset[p] + phases[p].size();
   }
-  std::vector<element::SolidResult> item_results(phase_offset.back());
+  std::vector<ItemResult> item_results(phase_offset.back());
   std::size_t element_count = model.solid_count();
+  for (const auto& b : model.shell_blocks) element_count += b.size();
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
+  const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
+  const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
 
   // Element forces at the current positions; the nodal force arrays must be zero and the packed
   // copy current (the node pass of the time loop does both).
@@ -146,25 +179,35 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 #pragma omp for schedule(dynamic, 2)
         for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
           const WorkItem& it = phase[static_cast<std::size_t>(w)];
-          const core::SolidBlock& blk = model.solid_blocks[it.block];
-          item_results[phase_offset[p] + static_cast<std::size_t>(w)] =
-              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
-                                    solids[it.block], view, dt, it.begin, it.end, forces);
+          ItemResult& out = item_results[phase_offset[p] + static_cast<std::size_t>(w)];
+          if (it.shell) {
+            const core::ShellBlock& blk = model.shell_blocks[it.block];
+            const element::ShellResult x = element::shell_forces(
+                blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block],
+                view, spin, dt, it.begin, it.end, forces, moments);
+            out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
+          } else {
+            const core::SolidBlock& blk = model.solid_blocks[it.block];
+            const element::SolidResult x = element::solid_forces(
+                blk, model.materials[static_cast<std::size_t>(blk.material)], solids[it.block],
+                view, dt, it.begin, it.end, forces);
+            out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
+          }
         }
       }
     }
     InternalResult r;
     for (std::size_t p = 0; p < phases.size(); ++p) {  // in order: deterministic
       for (std::size_t w = 0; w < phases[p].size(); ++w) {
-        const element::SolidResult& x = item_results[phase_offset[p] + w];
+        const ItemResult& x = item_results[phase_offset[p] + w];
         if (x.failed && !r.failed) {
           r.failed = true;
-          r.failed_block = phases[p][w].block;
+          r.failed_item = phases[p][w];
           r.failed_element = x.failed_element;
         }
         if (x.dt_min < r.dt_min) {
           r.dt_min = x.dt_min;
-          r.dt_block = phases[p][w].block;
+          r.dt_item = phases[p][w];
           r.dt_element = x.dt_element;
         }
         r.hourglass += x.hourglass_energy;
@@ -172,15 +215,18 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     return r;
   };
-  const auto element_name = [&](std::size_t b, std::size_t e) {
-    const core::SolidBlock& blk = model.solid_blocks[b];
-    return "solid element " + std::to_string(blk.element_id[e]) + " (part " +
-           std::to_string(model.parts[static_cast<std::size_t>(blk.part)].id) + ")";
+  const auto element_name = [&](const WorkItem& it, std::size_t e) {
+    const auto name = [&](const auto& blk, const char* kind) {
+      return std::string(kind) + " element " + std::to_string(blk.element_id[e]) + " (part " +
+             std::to_string(model.parts[static_cast<std::size_t>(blk.part)].id) + ")";
+    };
+    return it.shell ? name(model.shell_blocks[it.block], "shell")
+                    : name(model.solid_blocks[it.block], "solid");
   };
 
   double t = 0.0;
   long cycle = 0;
-  const Snapshot snap{0.0, 0, &model, &s, &solids};
+  const Snapshot snap{0.0, 0, &model, &s, &solids, &shells};
   const auto snapshot = [&] {
     Snapshot x = snap;
     x.time = t;
@@ -196,7 +242,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   pack();
   InternalResult ir = internal(0.0);
   if (ir.failed) {
-    fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
+    fail("non-positive volume in " + element_name(ir.failed_item, ir.failed_element) +
          " in the initial mesh");
     return res;
   }
@@ -225,6 +271,10 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const std::vector<unsigned char>& constrained = bc.constrained();
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
   std::vector<double> saved_f(3 * constrained_nodes.size());
+  const bool rotations = std::any_of(s.inertia.begin(), s.inertia.end(),
+                                     [](double v) { return v > 0.0; });
+  std::vector<double> old_wx(rotations ? n : 0), old_wy(rotations ? n : 0),
+      old_wz(rotations ? n : 0);
 
   // The node arrays that only outputs read are brought up to date on demand: positions
   // x = x0 + u and velocities at t_{n+1}. The hot passes then touch fewer arrays (each extra
@@ -239,6 +289,15 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w_full;
       s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w_full;
       s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w_full;
+    }
+    if (rotations) {
+#pragma omp parallel for schedule(static)
+      for (long li = 0; li < static_cast<long>(n); ++li) {
+        const auto i = static_cast<std::size_t>(li);
+        s.wnx[i] = old_wx[i] + (s.wx[i] - old_wx[i]) * w_full;
+        s.wny[i] = old_wy[i] + (s.wy[i] - old_wy[i]) * w_full;
+        s.wnz[i] = old_wz[i] + (s.wz[i] - old_wz[i]) * w_full;
+      }
     }
   };
 
@@ -311,15 +370,63 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     pending_external = 0.5 * dt_next * (sums[3] + next_ext);
     return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[2] + prev_ext)};
   };
+  // Rotations (shell nodes): w_{n+3/2} = w_{n+1/2} - I^-1 m dt_avg over the nodes with rotary
+  // inertia, fixed rotations zeroed, and the work of the moments by the trapezoid, as for
+  // the forces. Returns the internal work of the step just taken; the next step's first half
+  // goes to pending_internal.
+  std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
+  for (const core::FixedDofs& f : model.fixed) {
+    if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz)) fixed_rotations.push_back({f.node, f.dofs});
+  }
+  const auto advance_rotation = [&](double dt_prev, double dt_next, double dt_avg) {
+    if (!rotations) return 0.0;
+    const auto sums = deterministic_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
+      const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
+      const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
+      const double h = inv_inertia[i] * dt_avg;
+      const double nx = wx - mx * h, ny = wy - my * h, nz = wz - mz * h;
+      acc[0] += wx * mx + wy * my + wz * mz;
+      acc[1] += nx * mx + ny * my + nz * mz;
+      old_wx[i] = wx;
+      old_wy[i] = wy;
+      old_wz[i] = wz;
+      s.wx[i] = nx;
+      s.wy[i] = ny;
+      s.wz[i] = nz;
+      s.mx[i] = s.my[i] = s.mz[i] = 0.0;
+    });
+    // Fixed rotations: their velocity is zero, and so is the work of their reaction moments;
+    // remove the free part of the next half's sum at those nodes (their moment is gone, so the
+    // correction is exact only with the moment: recomputed from the change of w).
+    double correction = 0.0;
+    for (const auto& [node, dofs] : fixed_rotations) {
+      const auto i = static_cast<std::size_t>(node);
+      double* w[3] = {&s.wx[i], &s.wy[i], &s.wz[i]};
+      const double* wo[3] = {&old_wx[i], &old_wy[i], &old_wz[i]};
+      for (int d = 0; d < 3; ++d) {
+        if (!(dofs & (core::dof_rx << d))) continue;
+        // The moment was -(w - wo) I / dt_avg; its term w * m in acc[1] is dropped.
+        const double m = -(*w[d] - *wo[d]) * s.inertia[i] / dt_avg;
+        correction -= *w[d] * m;
+        *w[d] = 0.0;
+      }
+    }
+    pending_internal += 0.5 * dt_next * (sums[1] + correction);
+    return 0.5 * dt_prev * sums[0];
+  };
+
   const auto kinetic = [&] {
     sync();
     return 0.5 * deterministic_sum(n, [&](std::size_t i) {
-             return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]);
+             return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]) +
+                    s.inertia[i] *
+                        (s.wnx[i] * s.wnx[i] + s.wny[i] * s.wny[i] + s.wnz[i] * s.wnz[i]);
            });
   };
 
   // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
+  advance_rotation(0.0, dt, 0.5 * dt);
   const double kinetic0 = kinetic();
   double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
   double hourglass = 0.0;
@@ -403,7 +510,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     ir = internal(dt);
     if (ir.failed) {
       sync();
-      fail("non-positive volume in " + element_name(ir.failed_block, ir.failed_element) +
+      fail("non-positive volume in " + element_name(ir.failed_item, ir.failed_element) +
            " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
       break;
     }
@@ -414,13 +521,13 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     if (dt_next < dt_floor) {
       sync();
       fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
-           " at t = " + time_text(t) + ", set by " + element_name(ir.dt_block, ir.dt_element));
+           " at t = " + time_text(t) + ", set by " + element_name(ir.dt_item, ir.dt_element));
       break;
     }
     if (end_time > 0.0 && t + dt_next > end_time)
       dt_next = std::max(end_time - t, 1e-3 * dt_next);
     const auto half = advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
-    work_internal += half[0];
+    work_internal += half[0] + advance_rotation(dt, dt_next, 0.5 * (dt + dt_next));
     work_external += half[1];
     if (bad_velocities > 0.0) {
       std::size_t bad = 0;

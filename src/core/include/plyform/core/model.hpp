@@ -72,8 +72,8 @@ struct Part {
   Index material = 0;
 };
 
-/// Degrees of freedom as bits: x, y, z translations (rotations come with shells).
-enum Dof : unsigned { dof_x = 1u, dof_y = 2u, dof_z = 4u };
+/// Degrees of freedom as bits: x, y, z translations and rotations about x, y, z (shell nodes).
+enum Dof : unsigned { dof_x = 1u, dof_y = 2u, dof_z = 4u, dof_rx = 8u, dof_ry = 16u, dof_rz = 32u };
 
 /// *BOUNDARY_SPC_NODE/_SET: fixed translations of one node.
 struct FixedDofs {

@@ -15,6 +15,11 @@ struct NodalState {
   std::vector<double> ex, ey, ez;     ///< external forces at t_n
   std::vector<double> rx, ry, rz;     ///< reaction forces at constrained dofs, t_n
   std::vector<double> mass;           ///< lumped mass (with mass scaling)
+  // Rotational freedoms (nodes of shells; zero inertia elsewhere).
+  std::vector<double> wx, wy, wz;     ///< angular velocities at t_{n+1/2}
+  std::vector<double> wnx, wny, wnz;  ///< angular velocities at t_n (output, kinetic energy)
+  std::vector<double> mx, my, mz;     ///< internal moments at t_n
+  std::vector<double> inertia;        ///< lumped rotary inertia (isotropic)
 
   void resize(std::size_t n);
   [[nodiscard]] std::size_t size() const { return x.size(); }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "plyform/core/model.hpp"
+#include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
 
@@ -32,6 +33,7 @@ struct Snapshot {
   const core::Model* model = nullptr;
   const NodalState* nodes = nullptr;
   const std::vector<element::SolidBlockState>* solids = nullptr;
+  const std::vector<element::ShellBlockState>* shells = nullptr;
 };
 
 class OutputSink {
