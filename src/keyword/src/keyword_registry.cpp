@@ -18,10 +18,20 @@ KeywordSpec define_curve_keyword();
 KeywordSpec user_interface_friction_keyword();
 KeywordSpec node_keyword();
 KeywordSpec element_solid_keyword();
+KeywordSpec element_shell_keyword();
 KeywordSpec part_keyword();
 KeywordSpec section_solid_keyword();
+KeywordSpec section_shell_keyword();
 KeywordSpec mat_elastic_keyword();
 KeywordSpec mat_001_keyword();
+KeywordSpec mat_orthotropic_elastic_keyword();
+KeywordSpec mat_002_keyword();
+KeywordSpec mat_power_law_plasticity_keyword();
+KeywordSpec mat_018_keyword();
+KeywordSpec mat_rigid_keyword();
+KeywordSpec mat_020_keyword();
+KeywordSpec mat_piecewise_linear_plasticity_keyword();
+KeywordSpec mat_024_keyword();
 KeywordSpec mat_mooney_rivlin_keyword();
 KeywordSpec mat_027_keyword();
 KeywordSpec hourglass_keyword();
@@ -31,9 +41,11 @@ KeywordSpec boundary_spc_node_keyword();
 KeywordSpec boundary_spc_set_keyword();
 KeywordSpec boundary_prescribed_motion_node_keyword();
 KeywordSpec boundary_prescribed_motion_set_keyword();
+KeywordSpec boundary_prescribed_motion_rigid_keyword();
 KeywordSpec initial_velocity_generation_keyword();
 KeywordSpec load_node_point_keyword();
 KeywordSpec load_node_set_keyword();
+KeywordSpec load_rigid_body_keyword();
 KeywordSpec control_termination_keyword();
 KeywordSpec control_timestep_keyword();
 KeywordSpec control_energy_keyword();
@@ -57,10 +69,20 @@ std::span<const KeywordSpec> keyword_registry() {
       user_interface_friction_keyword(),
       node_keyword(),
       element_solid_keyword(),
+      element_shell_keyword(),
       part_keyword(),
       section_solid_keyword(),
+      section_shell_keyword(),
       mat_elastic_keyword(),
       mat_001_keyword(),
+      mat_orthotropic_elastic_keyword(),
+      mat_002_keyword(),
+      mat_power_law_plasticity_keyword(),
+      mat_018_keyword(),
+      mat_rigid_keyword(),
+      mat_020_keyword(),
+      mat_piecewise_linear_plasticity_keyword(),
+      mat_024_keyword(),
       mat_mooney_rivlin_keyword(),
       mat_027_keyword(),
       hourglass_keyword(),
@@ -70,9 +92,11 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_spc_set_keyword(),
       boundary_prescribed_motion_node_keyword(),
       boundary_prescribed_motion_set_keyword(),
+      boundary_prescribed_motion_rigid_keyword(),
       initial_velocity_generation_keyword(),
       load_node_point_keyword(),
       load_node_set_keyword(),
+      load_rigid_body_keyword(),
       control_termination_keyword(),
       control_timestep_keyword(),
       control_energy_keyword(),

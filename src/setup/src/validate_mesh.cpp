@@ -1,5 +1,6 @@
 #include "plyform/setup/validate_mesh.hpp"
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <string>
@@ -49,6 +50,33 @@ class IdTable {
   std::string keyword_;
   std::unordered_map<int, SourceLocation> ids_;
 };
+
+/// One definition of an id whose range several keywords share (sections, materials).
+struct Definition {
+  int id = 0;
+  SourceLocation where;
+  std::string_view keyword;
+};
+
+/// Adds definitions in deck order (files in the order read, then lines), so that a duplicate
+/// is reported on the later definition whatever the keywords.
+void add_in_deck_order(IdTable& table, std::vector<Definition> definitions,
+                       const model::ModelDesc& model, std::string_view field,
+                       std::vector<Diagnostic>& errors) {
+  const auto file_index = [&](const std::string& file) {
+    const auto it = std::find(model.files_read.begin(), model.files_read.end(), file);
+    return static_cast<std::size_t>(it - model.files_read.begin());
+  };
+  std::stable_sort(definitions.begin(), definitions.end(),
+                   [&](const Definition& a, const Definition& b) {
+                     const std::size_t fa = file_index(a.where.file);
+                     const std::size_t fb = file_index(b.where.file);
+                     return fa != fb ? fa < fb : a.where.line < b.where.line;
+                   });
+  for (const Definition& d : definitions) {
+    table.add(d.id, d.where, field, errors, d.keyword);
+  }
+}
 
 /// Reports a reference to an id the table does not hold.
 void check_ref(const IdTable& table, int id, const SourceLocation& where, std::string_view keyword,
@@ -118,6 +146,36 @@ void check_element_nodes(const model::ElementSolidDesc& e, std::vector<Diagnosti
   }
 }
 
+/// Shell node lists: N1, N2, N3 distinct; N4 distinct from them, or N4 = N3 (a triangle).
+void check_shell_nodes(const model::ElementShellDesc& e, std::vector<Diagnostic>& errors) {
+  const std::array<int, 4>& n = e.nodes;
+  for (std::size_t i = 1; i < n.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (n[i] == n[j] && !(i == 3 && j == 2)) {
+        errors.push_back(
+            {e.where, "*ELEMENT_SHELL", std::string(kNodeFields[i]),
+             cat("shell element ", e.id, ": ", kNodeFields[i], " repeats node ", n[j], " of ",
+                 kNodeFields[j], "; the only repeat accepted is N4 = N3 (a triangle)")});
+        return;
+      }
+    }
+  }
+}
+
+/// True when the element gets a thickness: from its _THICKNESS card or the section's T1.
+bool has_thickness(const model::ElementShellDesc& e, const model::SectionShellDesc& section) {
+  if (section.thickness[0] > 0.0) {
+    return true;
+  }
+  const std::size_t corners = e.nodes[3] == e.nodes[2] ? 3 : 4;  // a triangle needs THIC1..3
+  for (std::size_t i = 0; i < corners; ++i) {
+    if (!(e.thickness[i] > 0.0)) {
+      return false;
+    }
+  }
+  return e.has_thickness_card;
+}
+
 std::string_view motion_keyword(model::NodeTarget t) {
   return t == model::NodeTarget::kNode ? "*BOUNDARY_PRESCRIBED_MOTION_NODE"
                                        : "*BOUNDARY_PRESCRIBED_MOTION_SET";
@@ -145,25 +203,51 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   for (const model::ElementSolidDesc& e : model.solids) {
     elements.add(e.id, e.where, "EID", errors);
   }
+  // Shell ids are a range of their own, as in LS-DYNA (a shell and a solid may share an id).
+  IdTable shell_elements("shell element", "*ELEMENT_SHELL");
+  for (const model::ElementShellDesc& e : model.shells) {
+    shell_elements.add(e.id, e.where, "EID", errors);
+  }
   IdTable parts("part", "*PART");
   for (const model::PartDesc& p : model.parts) {
     parts.add(p.id, p.where, "PID", errors);
   }
-  // Section ids are shared by all section keywords; solid_sections marks the solid ones.
+  // Section ids are shared by all section keywords; solid_sections and shell_sections mark the
+  // kinds.
   std::vector<Diagnostic> ignored;  // duplicates reported through another table
-  IdTable sections("section", "*SECTION_SOLID");
+  IdTable sections("section", "*SECTION_ keyword");
+  std::vector<Definition> section_definitions;
   IdTable solid_sections("solid section", "*SECTION_SOLID");
   for (const model::SectionSolidDesc& s : model.solid_sections) {
-    sections.add(s.id, s.where, "SECID", errors);
+    section_definitions.push_back({s.id, s.where, "*SECTION_SOLID"});
     solid_sections.add(s.id, s.where, "SECID", ignored);
   }
-  // Material ids are shared by all *MAT_ keywords.
-  IdTable materials("material", "*MAT_ keyword");
-  for (const model::MatElasticDesc& m : model.elastic_materials) {
-    materials.add(m.id, m.where, "MID", errors, "*MAT_ELASTIC");
+  IdTable shell_sections("shell section", "*SECTION_SHELL");
+  std::unordered_map<int, const model::SectionShellDesc*> shell_section_by_id;
+  for (const model::SectionShellDesc& s : model.shell_sections) {
+    section_definitions.push_back({s.id, s.where, "*SECTION_SHELL"});
+    shell_sections.add(s.id, s.where, "SECID", ignored);
+    shell_section_by_id.emplace(s.id, &s);
   }
-  for (const model::MatMooneyRivlinDesc& m : model.mooney_rivlin_materials) {
-    materials.add(m.id, m.where, "MID", errors, "*MAT_MOONEY-RIVLIN_RUBBER");
+  add_in_deck_order(sections, std::move(section_definitions), model, "SECID", errors);
+  // Material ids are shared by all *MAT_ keywords; rigid_materials marks *MAT_RIGID.
+  IdTable materials("material", "*MAT_ keyword");
+  std::vector<Definition> material_definitions;
+  const auto add_materials = [&](const auto& descs, std::string_view keyword) {
+    for (const auto& m : descs) {
+      material_definitions.push_back({m.id, m.where, keyword});
+    }
+  };
+  add_materials(model.elastic_materials, "*MAT_ELASTIC");
+  add_materials(model.orthotropic_elastic_materials, "*MAT_ORTHOTROPIC_ELASTIC");
+  add_materials(model.power_law_materials, "*MAT_POWER_LAW_PLASTICITY");
+  add_materials(model.rigid_materials, "*MAT_RIGID");
+  add_materials(model.piecewise_linear_materials, "*MAT_PIECEWISE_LINEAR_PLASTICITY");
+  add_materials(model.mooney_rivlin_materials, "*MAT_MOONEY-RIVLIN_RUBBER");
+  add_in_deck_order(materials, std::move(material_definitions), model, "MID", errors);
+  IdTable rigid_materials("rigid material", "*MAT_RIGID");
+  for (const model::MatRigidDesc& m : model.rigid_materials) {
+    rigid_materials.add(m.id, m.where, "MID", ignored);
   }
   IdTable hourglasses("hourglass", "*HOURGLASS");
   for (const model::HourglassDesc& h : model.hourglasses) {
@@ -218,6 +302,51 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
     check_element_nodes(e, errors);
   }
 
+  // Shell elements -> part (with a shell section and a thickness), nodes; node patterns.
+  std::unordered_set<int> reported_shell_parts;
+  for (const model::ElementShellDesc& e : model.shells) {
+    const auto part = part_by_id.find(e.part_id);
+    if (part == part_by_id.end()) {
+      check_ref(parts, e.part_id, e.where, "*ELEMENT_SHELL", "PID", errors);
+    } else if (reported_shell_parts.contains(e.part_id)) {
+      // One error per part: the first offending element.
+    } else if (const int secid = part->second->section_id;
+               sections.contains(secid) && !shell_sections.contains(secid)) {
+      reported_shell_parts.insert(e.part_id);
+      errors.push_back(
+          {e.where, "*ELEMENT_SHELL", "PID",
+           cat("shell element ", e.id, ": part ", e.part_id, " has section ", secid,
+               ", which is not a *SECTION_SHELL (the first such element is reported)")});
+    } else if (const auto section = shell_section_by_id.find(secid);
+               section != shell_section_by_id.end() && !has_thickness(e, *section->second)) {
+      reported_shell_parts.insert(e.part_id);
+      errors.push_back(
+          {e.where, "*ELEMENT_SHELL", "PID",
+           cat("shell element ", e.id, ": no thickness: section ", secid,
+               " has T1 = 0 and the element has no *ELEMENT_SHELL_THICKNESS card with THIC1..4 "
+               "> 0 (the first such element of part ",
+               e.part_id, " is reported)")});
+    }
+    for (std::size_t i = 0; i < e.nodes.size(); ++i) {
+      if (!nodes.contains(e.nodes[i])) {
+        errors.push_back({e.where, "*ELEMENT_SHELL", std::string(kNodeFields[i]),
+                          cat("shell element ", e.id, ": node ", e.nodes[i],
+                              " is not defined (no *NODE with this id)")});
+      }
+    }
+    check_shell_nodes(e, errors);
+  }
+
+  // Materials -> curves.
+  for (const model::MatPiecewiseLinearPlasticityDesc& m : model.piecewise_linear_materials) {
+    if (m.lcss != 0 && !curves.contains(m.lcss)) {
+      errors.push_back({m.where, "*MAT_PIECEWISE_LINEAR_PLASTICITY", "LCSS",
+                        cat("material ", m.id, ": curve ", m.lcss,
+                            " is not defined (no *DEFINE_CURVE with this id; tables of curves, "
+                            "*DEFINE_TABLE, are not supported yet)")});
+    }
+  }
+
   // Sets -> nodes, parts.
   for (const model::SetListDesc& s : model.node_sets) {
     for (std::size_t i = 0; i < s.ids.size(); ++i) {
@@ -254,6 +383,29 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   for (const model::LoadNodeDesc& l : model.nodal_loads) {
     check_target(l.target, l.target_id, l.where, load_keyword(l.target));
     check_ref(curves, l.curve_id, l.where, load_keyword(l.target), "LCID", errors);
+  }
+  // Rigid body motions and loads -> a part whose material is *MAT_RIGID, curve.
+  const auto check_rigid_part = [&](int part_id, const SourceLocation& where,
+                                    std::string_view keyword) {
+    const auto part = part_by_id.find(part_id);
+    if (part == part_by_id.end()) {
+      check_ref(parts, part_id, where, keyword, "PID", errors);
+    } else if (materials.contains(part->second->material_id) &&
+               !rigid_materials.contains(part->second->material_id)) {
+      errors.push_back({where, std::string(keyword), "PID",
+                        cat("part ", part_id, " has material ", part->second->material_id,
+                            ", which is not a *MAT_RIGID: only rigid bodies take this keyword")});
+    }
+  };
+  for (const model::PrescribedMotionRigidDesc& m : model.rigid_motions) {
+    constexpr std::string_view kKeyword = "*BOUNDARY_PRESCRIBED_MOTION_RIGID";
+    check_rigid_part(m.part_id, m.where, kKeyword);
+    check_ref(curves, m.curve_id, m.where, kKeyword, "LCID", errors);
+  }
+  for (const model::LoadRigidBodyDesc& l : model.rigid_body_loads) {
+    constexpr std::string_view kKeyword = "*LOAD_RIGID_BODY";
+    check_rigid_part(l.part_id, l.where, kKeyword);
+    check_ref(curves, l.curve_id, l.where, kKeyword, "LCID", errors);
   }
   for (const model::InitialVelocityGenerationDesc& v : model.initial_velocities) {
     constexpr std::string_view kKeyword = "*INITIAL_VELOCITY_GENERATION";

@@ -152,8 +152,8 @@ TEST(Errors, ReportsEveryBlockAndKeepsReading) {
       "2\n"
       "0,0\n"
       "1,1\n"
-      "*ELEMENT_SHELL\n"  // 10: unsupported
-      "*DEFINE_CURVE\n"   // 11
+      "*ELEMENT_TSHELL\n"  // 10: unsupported
+      "*DEFINE_CURVE\n"    // 11
       "3\n"
       "1,0\n"
       "0,1\n",  // 14: not increasing

@@ -110,8 +110,13 @@ TEST(SolverKeywordErrors, UnsupportedOptionsAndKeywords) {
   EXPECT_TRUE(contains(d.message, "unsupported option _BIRTH_DEATH")) << d.message;
   d = single_error("*MAT_ELASTIC_FLUID\n1\n");
   EXPECT_TRUE(contains(d.message, "unsupported option _FLUID")) << d.message;
-  d = single_error("*BOUNDARY_PRESCRIBED_MOTION_RIGID\n1,1,0,1\n");
-  EXPECT_TRUE(contains(d.message, "unsupported keyword")) << d.message;
+  d = single_error("*BOUNDARY_PRESCRIBED_MOTION_RIGID_LOCAL\n1,1,0,1\n");
+  EXPECT_TRUE(contains(d.message, "unsupported option _LOCAL of *BOUNDARY_PRESCRIBED_MOTION_RIGID"))
+      << d.message;
+  d = single_error("*ELEMENT_SHELL_OFFSET\n1,1,1,2,3,4\n0.5\n");
+  EXPECT_TRUE(contains(d.message, "unsupported option _OFFSET of *ELEMENT_SHELL")) << d.message;
+  d = single_error("*MAT_RIGID_DISCRETE\n1,1e-9,1e5,0.3\n");
+  EXPECT_TRUE(contains(d.message, "unsupported option _DISCRETE of *MAT_RIGID")) << d.message;
   d = single_error("*PART_INERTIA\np\n1,1,1\n");
   EXPECT_TRUE(contains(d.message, "unsupported option _INERTIA of *PART")) << d.message;
 }

@@ -1,5 +1,6 @@
 // setup::validate_mesh: duplicate ids, undefined references, repeated element nodes, element
 // and section kinds; every error located.
+#include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -90,7 +91,8 @@ TEST(ValidateMesh, UndefinedReferencesAreAllReported) {
       "*DATABASE_HISTORY_NODE\n1,99\n");             // 23: node 99
   const std::string text = all(errors);
   for (const char* expected :
-       {"deck.k:7: *PART: field SECID: section 2 is not defined (no *SECTION_SOLID with this id)",
+       {"deck.k:7: *PART: field SECID: section 2 is not defined (no *SECTION_ keyword with this "
+        "id)",
         "deck.k:7: *PART: field MID: material 3 is not defined",
         "deck.k:7: *PART: field HGID: hourglass 4 is not defined",
         "deck.k:4: *ELEMENT_SOLID: field PID: part 9 is not defined (no *PART with this id)",
@@ -125,15 +127,167 @@ TEST(ValidateMesh, RepeatedNodeOutsideTheDegeneratePatterns) {
 }
 
 TEST(ValidateMesh, SolidElementNeedsASolidSection) {
-  // The section id is defined only by a kind other than *SECTION_SOLID: built by hand, as
-  // plyform reads no other section keyword yet, through a part whose section is undefined.
-  keyword::ReadResult read = keyword::read_deck_text(kGoodDeck, "deck.k");
-  ASSERT_TRUE(read.ok());
-  read.model.parts[0].section_id = 5;
-  const std::vector<Diagnostic> errors = validate_mesh(read.model);
-  ASSERT_EQ(errors.size(), 1u) << all(errors);
-  EXPECT_EQ(errors[0].keyword, "*PART");
-  EXPECT_EQ(errors[0].field, "SECID");
+  std::string deck(kGoodDeck);
+  deck += "*SECTION_SHELL\n5,2\n1.0\n*PART\nshell section\n2,5,1\n*ELEMENT_SOLID\n";
+  deck += "7,2,1,2,3,4,5,6,7,8\n8,2,1,2,3,4,5,6,7,8\n";
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 1u) << all(errors);  // the first element of the part only
+  EXPECT_EQ(errors[0].keyword, "*ELEMENT_SOLID");
+  EXPECT_EQ(errors[0].field, "PID");
+  EXPECT_NE(errors[0].message.find("element 7: part 2 has section 5, which is not a "
+                                   "*SECTION_SOLID"),
+            std::string::npos)
+      << errors[0].message;
+}
+
+// A blank (shells, part 1) drawn by a rigid punch (part 2) with a rigid die (part 3).
+constexpr std::string_view kSheetDeck =
+    "*NODE\n"
+    "1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,2,0,0\n6,2,1,0\n"  // lines 2-7
+    "*ELEMENT_SHELL\n"
+    "1,1,1,2,3,4\n"  // 9: quad
+    "2,1,2,5,6,6\n"  // 10: triangle, N4 = N3
+    "*ELEMENT_SHELL_THICKNESS\n"
+    "3,2,1,2,3,4\n"  // 12: punch
+    "0.5,0.5,0.5,0.5\n"
+    "*ELEMENT_SHELL\n"
+    "4,3,2,5,6,3\n"  // 15: die
+    "*PART\nblank\n1,1,1\n"
+    "*PART\npunch\n2,2,2\n"
+    "*PART\ndie\n3,1,3\n"
+    "*SECTION_SHELL\n1,2,0.8333,5\n1.0\n"
+    "*SECTION_SHELL\n2,2\n0.0\n"  // no thickness: the punch's elements give it
+    "*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2.1e5,0.3\n0,0,7\n"
+    "*MAT_RIGID\n2,7.8e-9,2.1e5,0.3\n1.0,4,7\n"
+    "*MAT_020\n3,7.8e-9,2.1e5,0.3\n1.0,7,7\n"
+    "*DEFINE_CURVE\n7\n0,200\n1,400\n"
+    "*DEFINE_CURVE\n8\n0,0\n1,1\n"
+    "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n2,3,2,8,-10.0\n2,7,0,8\n"
+    "*LOAD_RIGID_BODY\n3,3,8,-100.0\n";
+
+/// The line number of the k-th line (1-based) appended after kSheetDeck.
+int after_sheet_deck(int k) {
+  return static_cast<int>(std::count(kSheetDeck.begin(), kSheetDeck.end(), '\n')) + k;
+}
+
+TEST(ValidateMesh, SheetFormingDeckHasNoErrors) {
+  const std::vector<Diagnostic> errors = validate_text(kSheetDeck);
+  EXPECT_TRUE(errors.empty()) << all(errors);
+}
+
+TEST(ValidateMesh, ShellIdsAndReferences) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*ELEMENT_SHELL\n"
+      "1,1,1,2,3,4\n"                                          // duplicate shell id
+      "9,8,1,2,3,4\n"                                          // part 8
+      "10,1,1,2,3,44\n"                                        // node 44
+      "*ELEMENT_SOLID\n1,4,1,2,3,5,5,5,5,5\n"                  // a solid may share a shell's id
+      "*SECTION_SHELL\n1,2\n1.0\n"                             // duplicate section id
+      "*MAT_POWER_LAW_PLASTICITY\n2,7.8e-9,2e5,0.3,500,0.2\n"  // duplicate material id
+      "*MAT_024\n5,7.8e-9,2e5,0.3\n0,0,99\n"                   // curve 99
+      "*PART\nsolid on a shell section\n4,1,1\n";
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  const std::string text = all(errors);
+  for (const char* expected :
+       {"*ELEMENT_SHELL: field EID: shell element 1 is already defined at deck.k:9",
+        "*ELEMENT_SHELL: field PID: part 8 is not defined (no *PART with this id)",
+        "*ELEMENT_SHELL: field N4: shell element 10: node 44 is not defined",
+        "*SECTION_SHELL: field SECID: section 1 is already defined at deck.k:",
+        "*MAT_POWER_LAW_PLASTICITY: field MID: material 2 is already defined at deck.k:",
+        "*MAT_PIECEWISE_LINEAR_PLASTICITY: field LCSS: material 5: curve 99 is not defined (no "
+        "*DEFINE_CURVE with this id; tables of curves, *DEFINE_TABLE, are not supported yet)",
+        "*ELEMENT_SOLID: field PID: element 1: part 4 has section 1, which is not a "
+        "*SECTION_SOLID"}) {
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\nin:\n" << text;
+  }
+  EXPECT_EQ(errors.size(), 7u) << text;
+}
+
+TEST(ValidateMesh, ShellElementNeedsAShellSectionAndAThickness) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*ELEMENT_SHELL\n"
+      "20,5,1,2,3,4\n"  // part 5 has a solid section
+      "21,5,1,2,3,4\n"  // the same part: reported once
+      "22,2,1,2,3,4\n"  // part 2's section has T1 = 0 and no _THICKNESS card
+      "*ELEMENT_SHELL_THICKNESS\n"
+      "23,6,1,2,3,3\n0.5,0.5,0.5\n"      // triangle: THIC1..3 are enough
+      "24,7,1,2,3,4\n0.5,0.5,0.5,0.0\n"  // quad: THIC4 missing
+      "*PART\nsolid section\n5,9,1\n"
+      "*PART\ntriangles\n6,2,1\n"
+      "*PART\nquads\n7,2,1\n"
+      "*SECTION_SOLID\n9,1\n";
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 3u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(2)) +
+                ": *ELEMENT_SHELL: field PID: shell element 20: part 5 has section 9, which is "
+                "not a *SECTION_SHELL (the first such element is reported)");
+  EXPECT_EQ(errors[1].where.line, after_sheet_deck(4));
+  EXPECT_EQ(errors[1].field, "PID");
+  EXPECT_NE(errors[1].message.find("shell element 22: no thickness: section 2 has T1 = 0"),
+            std::string::npos)
+      << errors[1].message;
+  EXPECT_EQ(errors[2].where.line, after_sheet_deck(8));
+  EXPECT_NE(errors[2].message.find("shell element 24: no thickness"), std::string::npos)
+      << errors[2].message;
+}
+
+TEST(ValidateMesh, ShellNodeRepeats) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*ELEMENT_SHELL\n"
+      "30,1,1,2,3,3\n"   // triangle: fine
+      "31,1,1,1,3,4\n"   // N2 = N1
+      "32,1,1,2,2,4\n"   // N3 = N2
+      "33,1,1,2,3,1\n"   // N4 = N1
+      "34,1,1,2,1,1\n";  // N3 = N1 (also N4 = N3, but the first repeat is reported)
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 4u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(3)) +
+                ": *ELEMENT_SHELL: field N2: shell element 31: N2 repeats node 1 of N1; the only "
+                "repeat accepted is N4 = N3 (a triangle)");
+  EXPECT_EQ(errors[1].field, "N3");
+  EXPECT_EQ(errors[2].field, "N4");
+  EXPECT_EQ(errors[3].field, "N3");
+  EXPECT_EQ(errors[3].where.line, after_sheet_deck(6));
+}
+
+TEST(ValidateMesh, RigidMotionsAndLoadsNeedARigidPart) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*BOUNDARY_PRESCRIBED_MOTION_RIGID_ID\n"
+      "5,blank moved\n"
+      "1,3,0,8\n"  // 32: part 1 is not rigid
+      "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n"
+      "9,1,0,8\n"   // 5: part 9 undefined
+      "2,1,0,77\n"  // 6: curve 77
+      "*LOAD_RIGID_BODY\n"
+      "1,1,8\n"    // 37: part 1 is not rigid
+      "12,1,8\n"   // 38: part 12 undefined
+      "3,5,78\n";  // 39: curve 78
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 6u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(3)) +
+                ": *BOUNDARY_PRESCRIBED_MOTION_RIGID: field PID: part 1 has material 1, which is "
+                "not a *MAT_RIGID: only rigid bodies take this keyword");
+  EXPECT_EQ(errors[1].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(5)) +
+                ": *BOUNDARY_PRESCRIBED_MOTION_RIGID: field PID: part 9 is not defined (no *PART "
+                "with this id)");
+  EXPECT_EQ(errors[2].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(6)) +
+                ": *BOUNDARY_PRESCRIBED_MOTION_RIGID: field LCID: curve 77 is not defined (no "
+                "*DEFINE_CURVE with this id)");
+  EXPECT_EQ(errors[3].keyword, "*LOAD_RIGID_BODY");
+  EXPECT_EQ(errors[3].where.line, after_sheet_deck(8));
+  EXPECT_EQ(errors[3].field, "PID");
+  EXPECT_EQ(errors[4].where.line, after_sheet_deck(9));
+  EXPECT_EQ(errors[5].where.line, after_sheet_deck(10));
+  EXPECT_EQ(errors[5].field, "LCID");
 }
 
 }  // namespace

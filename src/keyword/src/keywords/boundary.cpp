@@ -1,4 +1,4 @@
-// *BOUNDARY_SPC_NODE/_SET(_ID) and *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET(_ID).
+// *BOUNDARY_SPC_NODE/_SET(_ID) and *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET/_RIGID(_ID).
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -104,6 +104,57 @@ constexpr std::array<FieldSpec, 8> motion_fields(const char (&target)[N],
                     .unit = "time",
                     .description = "time the motion starts"}};
 }
+constexpr std::array<int, 6> kRigidMotionDofs{1, 2, 3, 5, 6, 7};
+constexpr std::array kMotionRigidFields{
+    target_field("PID", "part id of the rigid body (its material is *MAT_RIGID)"),
+    FieldSpec{.name = "DOF",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "degree of freedom, LS-DYNA's code: 1, 2, 3 = x, y, z translation; "
+                             "5, 6, 7 = rotation about x, y, z",
+              .required = true,
+              .allowed = kRigidMotionDofs,
+              .allowed_note = "motion along or about a vector (4, -4, 8, -8) and the other codes "
+                              "are not supported yet"},
+    FieldSpec{.name = "VAD",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "0 velocity, 1 acceleration, 2 displacement",
+              .allowed = kVads,
+              .allowed_note = "VAD 3 (velocity against displacement) and 4 (relative "
+                              "displacement) are not supported"},
+    FieldSpec{.name = "LCID",
+              .type = FieldType::kInteger,
+              .min_value = 1,
+              .unit = "-",
+              .description = "curve of the motion against time",
+              .required = true},
+    FieldSpec{.name = "SF",
+              .type = FieldType::kReal,
+              .default_value = 1.0,
+              .unit = "-",
+              .description = "scale factor of the curve's ordinate"},
+    FieldSpec{.name = "VID",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "vector id (DOF 4, 8) or -coordinate system id: must be 0"},
+    FieldSpec{.name = "DEATH",
+              .type = FieldType::kReal,
+              .default_value = 1.0e28,
+              .unit = "time",
+              .description = "time the motion ends (0 is read as 1e28)"},
+    FieldSpec{.name = "BIRTH",
+              .type = FieldType::kReal,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "time the motion starts"}};
+constexpr std::array kMotionRigidCards{
+    CardSpec{.title = "ID card", .fields = kIdCardFields, .presence = "with _ID only"},
+    CardSpec{.title = "Card 1",
+             .fields = kMotionRigidFields,
+             .presence = "one per motion, until the next keyword; under _ID each is preceded "
+                         "by its ID card"},
+};
 constexpr std::array kMotionNodeFields = motion_fields("NID", "node id");
 constexpr std::array kMotionSetFields = motion_fields("NSID", "node set id");
 constexpr std::string_view kMotionRepeat =
@@ -189,6 +240,31 @@ void read_motion(KeywordInput& in, model::NodeTarget target, std::span<const Car
   }
 }
 
+void read_motion_rigid(KeywordInput& in) {
+  const std::span<const CardSpec> cards = kMotionRigidCards;
+  for (IdAndLine item = next_item(in, cards); item.line; item = next_item(in, cards)) {
+    const CardValues v = in.read(cards[1], *item.line);
+    model::PrescribedMotionRigidDesc m;
+    m.part_id = v.integer("PID");
+    m.id = item.id;
+    m.heading = std::move(item.heading);
+    m.dof = v.integer("DOF");
+    m.vad = v.integer("VAD");
+    m.curve_id = v.integer("LCID");
+    m.scale = v.real("SF");
+    m.vid = v.integer("VID");
+    m.death = v.real("DEATH") == 0.0 ? 1.0e28 : v.real("DEATH");
+    m.birth = v.real("BIRTH");
+    m.where = in.where(item.line->line);
+    require_zero(in, item.line->line, "VID", m.vid, "a vector or local coordinate system");
+    if (m.death <= m.birth) {
+      in.fail(item.line->line, "DEATH",
+              fmt::format("DEATH = {} is not after BIRTH = {}", m.death, m.birth));
+    }
+    in.model().rigid_motions.push_back(std::move(m));
+  }
+}
+
 }  // namespace
 
 KeywordSpec boundary_spc_node_keyword() {
@@ -216,7 +292,7 @@ KeywordSpec boundary_prescribed_motion_node_keyword() {
           .cards = kMotionNodeCards,
           .summary =
               "A velocity, acceleration or displacement of a node along a global axis, "
-              "given by a curve against time. _RIGID is not supported yet."};
+              "given by a curve against time."};
 }
 
 KeywordSpec boundary_prescribed_motion_set_keyword() {
@@ -226,6 +302,18 @@ KeywordSpec boundary_prescribed_motion_set_keyword() {
               [](KeywordInput& in) { read_motion(in, model::NodeTarget::kSet, kMotionSetCards); },
           .cards = kMotionSetCards,
           .summary = "As *BOUNDARY_PRESCRIBED_MOTION_NODE, for every node of a node set."};
+}
+
+KeywordSpec boundary_prescribed_motion_rigid_keyword() {
+  return {.name = "BOUNDARY_PRESCRIBED_MOTION_RIGID",
+          .options = kNoneOrId,
+          .handler = read_motion_rigid,
+          .cards = kMotionRigidCards,
+          .summary =
+              "A velocity, acceleration or displacement of a rigid body (a part whose "
+              "material is *MAT_RIGID) along or about a global axis through its centre of "
+              "mass, given by a curve against time. The second card of DOF 9-11 and VAD 4 is "
+              "not read (those codes are errors); _LOCAL is not supported."};
 }
 
 }  // namespace plyform::keyword

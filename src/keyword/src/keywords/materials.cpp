@@ -2,7 +2,7 @@
 #include <array>
 
 #include "../keyword_registry.hpp"
-#include "common_cards.hpp"
+#include "material_cards.hpp"
 
 namespace plyform::keyword {
 namespace {
@@ -101,12 +101,6 @@ constexpr std::array kRubberCards{
              .fields = kRubberCard2Fields,
              .presence = "optional: a missing card 2 is read as blank"},
 };
-
-void require_positive(KeywordInput& in, int line, std::string_view field, double value) {
-  if (!(value > 0.0)) {
-    in.fail(line, std::string(field), fmt::format("{} must be > 0, got {}", field, value));
-  }
-}
 
 void read_mat_elastic(KeywordInput& in) {
   model::MatElasticDesc mat;

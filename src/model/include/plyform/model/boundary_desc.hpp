@@ -38,4 +38,22 @@ struct PrescribedMotionDesc {
   SourceLocation where;   ///< the card line
 };
 
+/// One card of *BOUNDARY_PRESCRIBED_MOTION_RIGID (_ID): the motion of a rigid body (a part
+/// whose material is *MAT_RIGID), at its centre of mass.
+struct PrescribedMotionRigidDesc {
+  int part_id = 0;      ///< PID: the rigid part
+  int id = 0;           ///< ID of the _ID option (0 without it)
+  std::string heading;  ///< HEADING of the _ID option
+  /// DOF, LS-DYNA's code: 1, 2, 3 = translation along global x, y, z; 5, 6, 7 = rotation about
+  /// global x, y, z (through the centre of mass).
+  int dof = 0;
+  int vad = 0;            ///< VAD: 0 velocity, 1 acceleration, 2 displacement
+  int curve_id = 0;       ///< LCID: the curve of the motion against time
+  double scale = 1.0;     ///< SF: ordinate scale factor of the curve
+  int vid = 0;            ///< VID: vector or coordinate system id; must be 0
+  double death = 1.0e28;  ///< DEATH: time the motion ends, time units
+  double birth = 0.0;     ///< BIRTH: time the motion starts, time units
+  SourceLocation where;   ///< the card line
+};
+
 }  // namespace plyform::model

@@ -8,14 +8,20 @@
 #include "plyform/model/control_desc.hpp"
 #include "plyform/model/curve_desc.hpp"
 #include "plyform/model/database_desc.hpp"
+#include "plyform/model/element_shell_desc.hpp"
 #include "plyform/model/element_solid_desc.hpp"
 #include "plyform/model/hourglass_desc.hpp"
 #include "plyform/model/initial_velocity_desc.hpp"
 #include "plyform/model/load_node_desc.hpp"
+#include "plyform/model/load_rigid_body_desc.hpp"
 #include "plyform/model/mat_elastic_desc.hpp"
 #include "plyform/model/mat_mooney_rivlin_desc.hpp"
+#include "plyform/model/mat_orthotropic_elastic_desc.hpp"
+#include "plyform/model/mat_plasticity_desc.hpp"
+#include "plyform/model/mat_rigid_desc.hpp"
 #include "plyform/model/node_desc.hpp"
 #include "plyform/model/part_desc.hpp"
+#include "plyform/model/section_shell_desc.hpp"
 #include "plyform/model/section_solid_desc.hpp"
 #include "plyform/model/set_desc.hpp"
 #include "plyform/model/user_interface_friction_desc.hpp"
@@ -35,9 +41,15 @@ struct ModelDesc {
   // Mesh
   std::vector<NodeDesc> nodes;
   std::vector<ElementSolidDesc> solids;
+  std::vector<ElementShellDesc> shells;
   std::vector<PartDesc> parts;
   std::vector<SectionSolidDesc> solid_sections;
+  std::vector<SectionShellDesc> shell_sections;
   std::vector<MatElasticDesc> elastic_materials;
+  std::vector<MatOrthotropicElasticDesc> orthotropic_elastic_materials;
+  std::vector<MatPowerLawPlasticityDesc> power_law_materials;
+  std::vector<MatRigidDesc> rigid_materials;
+  std::vector<MatPiecewiseLinearPlasticityDesc> piecewise_linear_materials;
   std::vector<MatMooneyRivlinDesc> mooney_rivlin_materials;
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;
@@ -46,7 +58,9 @@ struct ModelDesc {
   // Loads, constraints, initial conditions
   std::vector<BoundarySpcDesc> spcs;
   std::vector<PrescribedMotionDesc> prescribed_motions;
+  std::vector<PrescribedMotionRigidDesc> rigid_motions;
   std::vector<LoadNodeDesc> nodal_loads;
+  std::vector<LoadRigidBodyDesc> rigid_body_loads;
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
 
   // Control and output
