@@ -4,6 +4,7 @@
 
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/material/constitutive.hpp"
+#include "plyform/material/shell.hpp"
 
 namespace plyform::element {
 namespace {
@@ -28,29 +29,32 @@ double plate_wave_speed(const core::Material& m) {
 }
 
 template <class M>
-constexpr bool shell_law = std::is_same_v<M, core::ElasticMaterial>;
+constexpr bool shell_law = std::is_same_v<M, core::ElasticMaterial> ||
+                           std::is_same_v<M, core::PiecewiseLinearPlasticity> ||
+                           std::is_same_v<M, core::PowerLawPlasticity> ||
+                           std::is_same_v<M, core::OrthotropicElasticMaterial>;
 
 // Strain increments and stresses of the points of one element, for the material call.
 struct Points {
   double dxx[kMaxNip], dyy[kMaxNip], dxy[kMaxNip], dyz[kMaxNip], dzx[kMaxNip], dzz[kMaxNip];
 };
 
-// Isotropic elastic plane stress at the points (transverse shear with the shear factor already
-// in the increments).
-void update_points(const core::ElasticMaterial& m, int nip, const Points& p, double* sxx,
-                   double* syy, double* sxy, double* syz, double* szx, double* /*eps_p*/,
-                   double* dzz) {
-  const double e = m.young, nu = m.poisson;
-  const double c = e / (1.0 - nu * nu), g = e / (2.0 * (1.0 + nu));
-  for (int k = 0; k < nip; ++k) {
-    const double dsx = c * (p.dxx[k] + nu * p.dyy[k]);
-    const double dsy = c * (p.dyy[k] + nu * p.dxx[k]);
-    sxx[k] += dsx;
-    syy[k] += dsy;
-    sxy[k] += 2.0 * g * p.dxy[k];
-    syz[k] += 2.0 * g * p.dyz[k];
-    szx[k] += 2.0 * g * p.dzx[k];
-    dzz[k] = -nu / e * (dsx + dsy);
+// The law's plane-stress update at the element's points (transverse shear increments carry
+// the shear factor already). `angle` is the material axis a from the local x axis (orthotropic).
+template <class M>
+void update_points(const M& m, int nip, const Points& p, double* sxx, double* syy, double* sxy,
+                   double* syz, double* szx, double* eps_p, double* dzz, double angle) {
+  const material::ShellPoints pts{p.dxx, p.dyy, p.dxy, p.dyz, p.dzx, sxx,
+                                  syy,   sxy,   syz,   szx,   eps_p, dzz};
+  if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
+    double c[kMaxNip], sn[kMaxNip];
+    for (int k = 0; k < nip; ++k) {
+      c[k] = std::cos(angle);
+      sn[k] = std::sin(angle);
+    }
+    material::shell_update(m, static_cast<std::size_t>(nip), pts, c, sn);
+  } else {
+    material::shell_update(m, static_cast<std::size_t>(nip), pts);
   }
 }
 
@@ -195,6 +199,25 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
     }
     gxz += thy;
     gyz -= thx;
+    // The in-plane velocity gradient above is taken on the configuration at t_{n+1}; mapped to
+    // the mid-step configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly
+    // skew L_m (Hughes-Winget): no spurious membrane strain however far the shell turns.
+    {
+      double lx0 = dxx, lxy = 0.0, lyx = 0.0, ly1 = dyy;
+      for (int i = 0; i < 4; ++i) {
+        lxy += g.b2[i] * vl[i][0];
+        lyx += g.b1[i] * vl[i][1];
+      }
+      const double h2 = 0.5 * dt;
+      const double m00 = 1.0 - h2 * lx0, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * ly1;
+      const double det = m00 * m11 - m01 * m10;
+      const double i00 = m11 / det, i01 = -m01 / det, i10 = -m10 / det, i11 = m00 / det;
+      const double a00 = lx0 * i00 + lxy * i10, a01 = lx0 * i01 + lxy * i11;
+      const double a10 = lyx * i00 + ly1 * i10, a11 = lyx * i01 + ly1 * i11;
+      dxx = a00;
+      dyy = a11;
+      gxy = a01 + a10;
+    }
     // Strain increments at the thickness points (tensor shears; the shear factor scales the
     // transverse shear).
     for (int k = 0; k < nip; ++k) {
@@ -206,8 +229,19 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       p.dzx[k] = 0.5 * kappa * gxz * dt;
     }
     const std::size_t q0 = static_cast<std::size_t>(nip) * e;
+    double angle = 0.0;
+    if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
+      // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
+      // both projected on the shell.
+      double a3[3];
+      for (int d = 0; d < 3; ++d)
+        a3[d] = mat.aopt == 2 ? mat.a[d] : x[1][d] - x[0][d];
+      const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
+      const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
+      angle = std::atan2(ay, ax);
+    }
     update_points(mat, nip, p, &st.s[0][q0], &st.s[1][q0], &st.s[2][q0], &st.s[3][q0], &st.s[4][q0],
-                  &st.eps_p[q0], dzz);
+                  &st.eps_p[q0], dzz, angle);
     // Resultants over the thickness, and the thickness update from the mean normal strain.
     double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
     for (int k = 0; k < nip; ++k) {

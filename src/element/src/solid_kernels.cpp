@@ -72,9 +72,32 @@ void update_material(const M& m, std::size_t n, PointScratch& s, double dt, Soli
   }
 }
 
-// Velocity gradient L_ij = sum_I v_iI dN_I/dx_j -> D (sym) and W (w_xy, w_yz, w_zx).
+// L on the configuration at t_{n+1} mapped to the mid-step configuration:
+// L_m = L (I - dt/2 L)^-1. A rigid rotation then gives an exactly skew L_m (Hughes-Winget), so
+// the hypoelastic update stays objective however far an element turns.
+inline void to_mid_step(double l[9], double dt) {
+  const double h = 0.5 * dt;
+  const double m[9] = {1.0 - h * l[0], -h * l[1], -h * l[2], -h * l[3],     1.0 - h * l[4],
+                       -h * l[5],      -h * l[6], -h * l[7], 1.0 - h * l[8]};
+  const double c0 = m[4] * m[8] - m[5] * m[7], c1 = m[5] * m[6] - m[3] * m[8],
+               c2 = m[3] * m[7] - m[4] * m[6];
+  const double inv_det = 1.0 / (m[0] * c0 + m[1] * c1 + m[2] * c2);
+  const double mi[9] = {
+      c0 * inv_det, (m[2] * m[7] - m[1] * m[8]) * inv_det, (m[1] * m[5] - m[2] * m[4]) * inv_det,
+      c1 * inv_det, (m[0] * m[8] - m[2] * m[6]) * inv_det, (m[2] * m[3] - m[0] * m[5]) * inv_det,
+      c2 * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det, (m[0] * m[4] - m[1] * m[3]) * inv_det};
+  double r[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      r[3 * i + j] = l[3 * i] * mi[j] + l[3 * i + 1] * mi[3 + j] + l[3 * i + 2] * mi[6 + j];
+  for (int k = 0; k < 9; ++k)
+    l[k] = r[k];
+}
+
+// Velocity gradient L_ij = sum_I v_iI dN_I/dx_j -> D (sym) and W (w_xy, w_yz, w_zx), on the
+// mid-step configuration (see to_mid_step).
 inline void rates(const double* vx, const double* vy, const double* vz, const double* bx,
-                  const double* by, const double* bz, PointScratch& s, std::size_t p) {
+                  const double* by, const double* bz, PointScratch& s, std::size_t p, double dt) {
   double l[3][3] = {};
   for (int i = 0; i < 8; ++i) {
     l[0][0] += vx[i] * bx[i];
@@ -87,6 +110,11 @@ inline void rates(const double* vx, const double* vy, const double* vz, const do
     l[2][1] += vz[i] * by[i];
     l[2][2] += vz[i] * bz[i];
   }
+  double lm[9] = {l[0][0], l[0][1], l[0][2], l[1][0], l[1][1], l[1][2], l[2][0], l[2][1], l[2][2]};
+  to_mid_step(lm, dt);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      l[i][j] = lm[3 * i + j];
   s.d[0][p] = l[0][0];
   s.d[1][p] = l[1][1];
   s.d[2][p] = l[2][2];
@@ -308,6 +336,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
       for (int j = 0; j < 9; ++j)
         L[j][k] = l[j];
+      to_mid_step(l, dt);
       s.d[0][k] = l[0];
       s.d[1][k] = l[4];
       s.d[2][k] = l[8];
@@ -410,7 +439,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
       st.volume[e] = mean[k].volume;
       // Mean dilatation: the volumetric rate of every point is the element's mean.
       PointScratch one;
-      rates(v.x, v.y, v.z, mean[k].bx, mean[k].by, mean[k].bz, one, 0);
+      rates(v.x, v.y, v.z, mean[k].bx, mean[k].by, mean[k].bz, one, 0, dt);
       const double mean_trace = one.d[0][0] + one.d[1][0] + one.d[2][0];
       GaussGradients g0;
       double ref_volume = 0.0;
@@ -427,7 +456,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
       }
       for (int q = 0; q < 8; ++q) {
         const std::size_t p = 8 * k + static_cast<std::size_t>(q);
-        rates(v.x, v.y, v.z, gg[k].bx[q], gg[k].by[q], gg[k].bz[q], s, p);
+        rates(v.x, v.y, v.z, gg[k].bx[q], gg[k].by[q], gg[k].bz[q], s, p, dt);
         const double shift = (mean_trace - (s.d[0][p] + s.d[1][p] + s.d[2][p])) / 3.0;
         s.d[0][p] += shift;
         s.d[1][p] += shift;

@@ -47,7 +47,8 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
       double scale = 1.0;
       if (target > 0.0) {
         const double dte = element::shell_stable_dt(b, m, nodes, e);
-        if (dte < target) scale = (target / dte) * (target / dte);
+        if (dte < target)
+          scale = (target / dte) * (target / dte);
       }
       shells[bi].dt_factor[e] = std::sqrt(scale);
       r.physical += me;
@@ -56,7 +57,8 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
       const bool triangle = b.connectivity[4 * e + 2] == b.connectivity[4 * e + 3];
       for (int i = 0; i < 4; ++i) {
         const double share = triangle ? (i >= 2 ? 1.0 / 6.0 : 1.0 / 3.0) : 0.25;
-        const auto node = static_cast<std::size_t>(b.connectivity[4 * e + static_cast<std::size_t>(i)]);
+        const auto node =
+            static_cast<std::size_t>(b.connectivity[4 * e + static_cast<std::size_t>(i)]);
         mass[node] += share * me * scale;
         inertia[node] += share * me * scale * (t * t + area) / 12.0;
       }

@@ -35,7 +35,8 @@ void add_phases(const std::vector<Block>& blocks, bool shell,
       for (std::size_t e = start[c]; e < start[c + 1]; e += kItem) {
         phase.push_back({shell, b, e, std::min(start[c + 1], e + kItem)});
       }
-      if (!phase.empty()) phases.push_back(std::move(phase));
+      if (!phase.empty())
+        phases.push_back(std::move(phase));
     }
   }
 }
@@ -95,6 +96,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     s.vy = model.v0y;
     s.vz = model.v0z;
   }
+  if (!model.w0x.empty()) {
+    s.wx = model.w0x;
+    s.wy = model.w0y;
+    s.wz = model.w0z;
+  }
   // Packed copy of x, y, z, vx, vy, vz per node for the element gathers (one cache line).
   std::vector<double> packed(6 * n);
   const auto pack = [&] {
@@ -126,7 +132,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   res.added_mass = mass.added;
   std::vector<double> inv_mass(n, 0.0), inv_inertia(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (s.inertia[i] > 0.0) inv_inertia[i] = 1.0 / s.inertia[i];
+    if (s.inertia[i] > 0.0)
+      inv_inertia[i] = 1.0 / s.inertia[i];
   }
   std::size_t massless = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -146,8 +153,10 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     return !b.colour_start.empty() && b.colour_start.back() == b.size();
   };
   bool all_coloured = true;
-  for (const auto& b : model.solid_blocks) all_coloured = all_coloured && coloured(b);
-  for (const auto& b : model.shell_blocks) all_coloured = all_coloured && coloured(b);
+  for (const auto& b : model.solid_blocks)
+    all_coloured = all_coloured && coloured(b);
+  for (const auto& b : model.shell_blocks)
+    all_coloured = all_coloured && coloured(b);
   {
     if (!all_coloured) {
       res.ok = false;
@@ -162,7 +171,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   }
   std::vector<ItemResult> item_results(phase_offset.back());
   std::size_t element_count = model.solid_count();
-  for (const auto& b : model.shell_blocks) element_count += b.size();
+  for (const auto& b : model.shell_blocks)
+    element_count += b.size();
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
   const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
   const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
@@ -188,9 +198,9 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
             out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
           } else {
             const core::SolidBlock& blk = model.solid_blocks[it.block];
-            const element::SolidResult x = element::solid_forces(
-                blk, model.materials[static_cast<std::size_t>(blk.material)], solids[it.block],
-                view, dt, it.begin, it.end, forces);
+            const element::SolidResult x =
+                element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                                      solids[it.block], view, dt, it.begin, it.end, forces);
             out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
           }
         }
@@ -271,8 +281,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const std::vector<unsigned char>& constrained = bc.constrained();
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
   std::vector<double> saved_f(3 * constrained_nodes.size());
-  const bool rotations = std::any_of(s.inertia.begin(), s.inertia.end(),
-                                     [](double v) { return v > 0.0; });
+  const bool rotations =
+      std::any_of(s.inertia.begin(), s.inertia.end(), [](double v) { return v > 0.0; });
   std::vector<double> old_wx(rotations ? n : 0), old_wy(rotations ? n : 0),
       old_wz(rotations ? n : 0);
 
@@ -376,10 +386,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   // goes to pending_internal.
   std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
   for (const core::FixedDofs& f : model.fixed) {
-    if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz)) fixed_rotations.push_back({f.node, f.dofs});
+    if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
+      fixed_rotations.push_back({f.node, f.dofs});
   }
   const auto advance_rotation = [&](double dt_prev, double dt_next, double dt_avg) {
-    if (!rotations) return 0.0;
+    if (!rotations)
+      return 0.0;
     const auto sums = deterministic_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
       const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
       const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
@@ -404,7 +416,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       double* w[3] = {&s.wx[i], &s.wy[i], &s.wz[i]};
       const double* wo[3] = {&old_wx[i], &old_wy[i], &old_wz[i]};
       for (int d = 0; d < 3; ++d) {
-        if (!(dofs & (core::dof_rx << d))) continue;
+        if (!(dofs & (core::dof_rx << d)))
+          continue;
         // The moment was -(w - wo) I / dt_avg; its term w * m in acc[1] is dropped.
         const double m = -(*w[d] - *wo[d]) * s.inertia[i] / dt_avg;
         correction -= *w[d] * m;

@@ -84,8 +84,26 @@ TEST_P(PatchTest, HypoelasticStressIsExactAndInteriorForcesCancel) {
                                      dt, 0, 8, p.forces());
   ASSERT_FALSE(r.failed);
   const double lambda = 210000.0 * 0.3 / (1.3 * 0.4), mu = 210000.0 / 2.6;
+  // The rate of deformation on the mid-step configuration x_m = (I - dt/2 L) X, where the
+  // element evaluates it: L_m = L (I - dt/2 L)^-1 (Hughes-Winget; objective under rotation).
+  double lm[9];
+  {
+    const double h = 0.5 * dt;
+    const double a[9] = {1 - h * l[0], -h * l[1], -h * l[2], -h * l[3],   1 - h * l[4],
+                         -h * l[5],    -h * l[6], -h * l[7], 1 - h * l[8]};
+    const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                       a[2] * (a[3] * a[7] - a[4] * a[6]);
+    const double inv[9] = {(a[4] * a[8] - a[5] * a[7]) / det, (a[2] * a[7] - a[1] * a[8]) / det,
+                           (a[1] * a[5] - a[2] * a[4]) / det, (a[5] * a[6] - a[3] * a[8]) / det,
+                           (a[0] * a[8] - a[2] * a[6]) / det, (a[2] * a[3] - a[0] * a[5]) / det,
+                           (a[3] * a[7] - a[4] * a[6]) / det, (a[1] * a[6] - a[0] * a[7]) / det,
+                           (a[0] * a[4] - a[1] * a[3]) / det};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        lm[3 * i + j] = l[3 * i] * inv[j] + l[3 * i + 1] * inv[3 + j] + l[3 * i + 2] * inv[6 + j];
+  }
   const double d[6] = {
-      l[0], l[4], l[8], 0.5 * (l[1] + l[3]), 0.5 * (l[5] + l[7]), 0.5 * (l[6] + l[2])};
+      lm[0], lm[4], lm[8], 0.5 * (lm[1] + lm[3]), 0.5 * (lm[5] + lm[7]), 0.5 * (lm[6] + lm[2])};
   const double tr = d[0] + d[1] + d[2];
   double expected[6];
   for (int c = 0; c < 6; ++c)

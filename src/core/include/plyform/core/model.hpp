@@ -157,6 +157,7 @@ struct Model {
   std::vector<RigidMotion> rigid_motions;
   std::vector<RigidLoad> rigid_loads;
   std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)
+  std::vector<double> w0x, w0y, w0z;  ///< initial angular velocities of shell nodes (empty: none)
   Controls controls;
   OutputRequests output;
 
