@@ -217,6 +217,29 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       dxx = a00;
       dyy = a11;
       gxy = a01 + a10;
+      // The stored stresses turn with the frame (they are its components); the material's spin
+      // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
+      // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
+      // (Jaumann relative to the frame), so the result does not depend on which edges the frame
+      // follows, i.e. on the node numbering.
+      const double s1x = 0.5 * (g.xl[1] + g.xl[2] - g.xl[0] - g.xl[3]);
+      const double s1v = 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]);
+      const double frame_spin = s1v / s1x;
+      const double phi = (0.5 * (a10 - a01) - frame_spin) * dt;
+      if (phi != 0.0) {
+        const double c = std::cos(phi), sn = std::sin(phi);
+        const std::size_t q0 = static_cast<std::size_t>(nip) * e;
+        for (int k = 0; k < nip; ++k) {
+          const std::size_t q = q0 + static_cast<std::size_t>(k);
+          const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
+          st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
+          st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
+          st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
+          const double tzx = st.s[4][q], tyz = st.s[3][q];
+          st.s[4][q] = c * tzx - sn * tyz;
+          st.s[3][q] = sn * tzx + c * tyz;
+        }
+      }
     }
     // Strain increments at the thickness points (tensor shears; the shear factor scales the
     // transverse shear).

@@ -6,6 +6,7 @@
 
 #include "plyform/element/hex8_geometry.hpp"
 #include "plyform/material/constitutive.hpp"
+#include "plyform/material/plasticity.hpp"
 
 namespace plyform::element {
 namespace {
@@ -18,7 +19,9 @@ using core::MooneyRivlinMaterial;
 // The laws the solid kernels integrate.
 template <class M>
 constexpr bool solid_law =
-    std::is_same_v<M, ElasticMaterial> || std::is_same_v<M, MooneyRivlinMaterial>;
+    std::is_same_v<M, ElasticMaterial> || std::is_same_v<M, MooneyRivlinMaterial> ||
+    std::is_same_v<M, core::PiecewiseLinearPlasticity> ||
+    std::is_same_v<M, core::PowerLawPlasticity>;
 
 void gather(const core::SolidBlock& b, std::size_t e, const double* x, const double* y,
             const double* z, HexCoords& c) {
@@ -63,12 +66,16 @@ void update_material(const M& m, std::size_t n, PointScratch& s, double dt, Soli
   const material::SymView sigma{&st.s[0][first_point], &st.s[1][first_point],
                                 &st.s[2][first_point], &st.s[3][first_point],
                                 &st.s[4][first_point], &st.s[5][first_point]};
-  if constexpr (std::is_same_v<M, ElasticMaterial>) {
-    const material::ConstSymView d{s.d[0], s.d[1], s.d[2], s.d[3], s.d[4], s.d[5]};
-    material::elastic_jaumann(m, n, d, s.w[0], s.w[1], s.w[2], dt, sigma);
-  } else {
+  if constexpr (std::is_same_v<M, MooneyRivlinMaterial>) {
     const double* f[9] = {s.f[0], s.f[1], s.f[2], s.f[3], s.f[4], s.f[5], s.f[6], s.f[7], s.f[8]};
     material::mooney_rivlin_cauchy(m, n, f, sigma);
+  } else {
+    const material::ConstSymView d{s.d[0], s.d[1], s.d[2], s.d[3], s.d[4], s.d[5]};
+    if constexpr (std::is_same_v<M, ElasticMaterial>) {
+      material::elastic_jaumann(m, n, d, s.w[0], s.w[1], s.w[2], dt, sigma);
+    } else {
+      material::solid_update(m, n, d, s.w[0], s.w[1], s.w[2], dt, sigma, &st.eps_p[first_point]);
+    }
   }
 }
 
@@ -519,6 +526,7 @@ void SolidBlockState::resize(const core::SolidBlock& block) {
   const std::size_t n = block.size();
   for (auto& c : s)
     c.assign(n * static_cast<std::size_t>(points), 0.0);
+  eps_p.assign(n * static_cast<std::size_t>(points), 0.0);
   hourglass.assign(n * 12, 0.0);
   volume.assign(n, 0.0);
   dt_factor.assign(n, 1.0);

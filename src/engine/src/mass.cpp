@@ -16,6 +16,8 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
   for (std::size_t bi = 0; bi < model.solid_blocks.size(); ++bi) {
     const core::SolidBlock& b = model.solid_blocks[bi];
     const core::Material& m = model.materials[static_cast<std::size_t>(b.material)];
+    if (std::holds_alternative<core::RigidMaterial>(m))
+      continue;  // the rigid body's own mass
     const double rho = core::density(m);
     for (std::size_t e = 0; e < b.size(); ++e) {
       const double v0 = element::solid_reference_volume(b, nodes, e);
@@ -39,6 +41,8 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
   for (std::size_t bi = 0; bi < model.shell_blocks.size(); ++bi) {
     const core::ShellBlock& b = model.shell_blocks[bi];
     const core::Material& m = model.materials[static_cast<std::size_t>(b.material)];
+    if (std::holds_alternative<core::RigidMaterial>(m))
+      continue;
     const double rho = core::density(m);
     for (std::size_t e = 0; e < b.size(); ++e) {
       const double area = element::shell_reference_area(b, nodes, e);

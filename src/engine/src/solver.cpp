@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <variant>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -25,10 +27,15 @@ struct WorkItem {
 };
 
 template <class Block>
-void add_phases(const std::vector<Block>& blocks, bool shell,
+void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,
                 std::vector<std::vector<WorkItem>>& phases) {
   constexpr std::size_t kItem = 256;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
+    // Rigid parts move with their body: no internal forces, no stable step.
+    if (std::holds_alternative<core::RigidMaterial>(
+            model.materials[static_cast<std::size_t>(blocks[b].material)])) {
+      continue;
+    }
     const std::vector<std::size_t>& start = blocks[b].colour_start;
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       std::vector<WorkItem> phase;
@@ -43,8 +50,8 @@ void add_phases(const std::vector<Block>& blocks, bool shell,
 
 std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
   std::vector<std::vector<WorkItem>> phases;
-  add_phases(model.solid_blocks, false, phases);
-  add_phases(model.shell_blocks, true, phases);
+  add_phases(model, model.solid_blocks, false, phases);
+  add_phases(model, model.shell_blocks, true, phases);
   return phases;
 }
 
@@ -135,11 +142,28 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     if (s.inertia[i] > 0.0)
       inv_inertia[i] = 1.0 / s.inertia[i];
   }
+  // Rigid bodies: their nodes move with the body (src/rigid), which needs the nodal forces.
+  std::optional<rigid::RigidBodies> rigid_bodies;
+  try {
+    rigid_bodies.emplace(model);
+  } catch (const std::exception& e) {
+    res.ok = false;
+    res.error = e.what();
+    return res;
+  }
+  const bool has_rigid = !rigid_bodies->empty();
+  const std::vector<core::Index>& rigid_nodes = rigid_bodies->rigid_nodes();
+  const std::vector<unsigned char>& is_rigid = rigid_bodies->is_rigid_node();
+  std::vector<double> rfx(has_rigid ? n : 0), rfy(has_rigid ? n : 0), rfz(has_rigid ? n : 0);
+  std::vector<std::array<double, 3>> rigid_free(rigid_nodes.size());
+  // Rigid nodes turn with their body: the rotation pass must not move them.
+  for (core::Index ri : rigid_nodes)
+    inv_inertia[static_cast<std::size_t>(ri)] = 0.0;
   std::size_t massless = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (s.mass[i] > 0.0) {
       inv_mass[i] = 1.0 / s.mass[i];
-    } else {
+    } else if (!has_rigid || !is_rigid[i]) {
       ++massless;
     }
   }
@@ -236,7 +260,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   double t = 0.0;
   long cycle = 0;
-  const Snapshot snap{0.0, 0, &model, &s, &solids, &shells};
+  const Snapshot snap{0.0, 0, &model, &s, &solids, &shells, &*rigid_bodies};
   const auto snapshot = [&] {
     Snapshot x = snap;
     x.time = t;
@@ -256,13 +280,20 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
          " in the initial mesh");
     return res;
   }
-  if (element_count == 0 || !(ir.dt_min < 1e300)) {
+  const double tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
+  // Without deformable elements (rigid bodies only) nothing bounds the step: DTINIT sets it.
+  const bool fixed_step = !(ir.dt_min < 1e300);
+  if (fixed_step && !(model.controls.dt_init > 0.0)) {
     res.ok = false;
-    res.error = "the model has no elements to integrate";
+    res.error =
+        "the model has no deformable element to set the time step: give DTINIT in "
+        "*CONTROL_TIMESTEP";
     return res;
   }
-  const double tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
-  double dt = tssfac * ir.dt_min;
+  const auto stable_step = [&](const InternalResult& x) {
+    return fixed_step ? model.controls.dt_init : tssfac * x.dt_min;
+  };
+  double dt = stable_step(ir);
   if (model.controls.dt_init > 0.0)
     dt = std::min(dt, model.controls.dt_init);
   const double end_time = model.controls.end_time;
@@ -323,6 +354,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const auto advance_velocity = [&](double t_now, double dt_prev, double dt_next,
                                     double dt_avg) -> std::array<double, 2> {
     w_full = dt_prev / (2.0 * dt_avg);
+    for (core::Index ri : rigid_nodes) {  // the velocity pass zeroes the forces
+      const auto i = static_cast<std::size_t>(ri);
+      rfx[i] = s.fx[i];
+      rfy[i] = s.fy[i];
+      rfz[i] = s.fz[i];
+    }
     for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
       const auto i = static_cast<std::size_t>(constrained_nodes[k]);
       saved_f[3 * k] = s.fx[i];
@@ -375,6 +412,44 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       s.rx[i] = r[0];
       s.ry[i] = r[1];
       s.rz[i] = r[2];
+    }
+    if (has_rigid) {
+      // The bodies set their nodes' velocities; correct the next half's work at those nodes.
+      for (std::size_t k = 0; k < rigid_nodes.size(); ++k) {
+        const auto i = static_cast<std::size_t>(rigid_nodes[k]);
+        rigid_free[k] = {s.vx[i], s.vy[i], s.vz[i]};
+      }
+      rigid::NodalArrays arrays;
+      arrays.fx = rfx.data();
+      arrays.fy = rfy.data();
+      arrays.fz = rfz.data();
+      arrays.ex = s.ex.data();
+      arrays.ey = s.ey.data();
+      arrays.ez = s.ez.data();
+      arrays.ux = s.ux.data();
+      arrays.uy = s.uy.data();
+      arrays.uz = s.uz.data();
+      arrays.vx = s.vx.data();
+      arrays.vy = s.vy.data();
+      arrays.vz = s.vz.data();
+      arrays.wx = s.wx.data();
+      arrays.wy = s.wy.data();
+      arrays.wz = s.wz.data();
+      rigid_bodies->advance({t_now, dt_prev, dt_next, dt_avg}, arrays);
+      for (std::size_t k = 0; k < rigid_nodes.size(); ++k) {
+        const auto i = static_cast<std::size_t>(rigid_nodes[k]);
+        const double d[3] = {s.vx[i] - rigid_free[k][0], s.vy[i] - rigid_free[k][1],
+                             s.vz[i] - rigid_free[k][2]};
+        next_int += d[0] * rfx[i] + d[1] * rfy[i] + d[2] * rfz[i];
+        next_ext += d[0] * s.ex[i] + d[1] * s.ey[i] + d[2] * s.ez[i];
+      }
+      // Work of the bodies' prescribed motions and constraints (their reactions).
+      for (const auto& b : rigid_bodies->report()) {
+        prev_ext += (b.reaction[0] * b.velocity[0] + b.reaction[1] * b.velocity[1] +
+                     b.reaction[2] * b.velocity[2] + b.reaction_moment[0] * b.omega[0] +
+                     b.reaction_moment[1] * b.omega[1] + b.reaction_moment[2] * b.omega[2]) *
+                    2.0 * dt_avg / std::max(dt_prev, 1e-300) * (dt_prev > 0.0 ? 1.0 : 0.0);
+      }
     }
     pending_internal = 0.5 * dt_next * (sums[1] + next_int);
     pending_external = 0.5 * dt_next * (sums[3] + next_ext);
@@ -430,11 +505,15 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   const auto kinetic = [&] {
     sync();
-    return 0.5 * deterministic_sum(n, [&](std::size_t i) {
-             return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]) +
-                    s.inertia[i] *
-                        (s.wnx[i] * s.wnx[i] + s.wny[i] * s.wny[i] + s.wnz[i] * s.wnz[i]);
-           });
+    return 0.5 * deterministic_sum(
+                     n,
+                     [&](std::size_t i) {
+                       return s.mass[i] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] +
+                                           s.vnz[i] * s.vnz[i]) +
+                              s.inertia[i] *
+                                  (s.wnx[i] * s.wnx[i] + s.wny[i] * s.wny[i] + s.wnz[i] * s.wnz[i]);
+                     }) +
+           rigid_bodies->kinetic_energy();
   };
 
   // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
@@ -530,7 +609,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     hourglass += ir.hourglass;
     bc.loads(t, s);
 
-    double dt_next = tssfac * ir.dt_min;
+    double dt_next = stable_step(ir);
     if (dt_next < dt_floor) {
       sync();
       fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +

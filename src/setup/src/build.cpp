@@ -3,6 +3,10 @@
 #include <cmath>
 #include <string>
 #include <unordered_map>
+#include <variant>
+
+#include "plyform/element/shell_kernels.hpp"
+#include "plyform/element/solid_kernels.hpp"
 
 namespace plyform::setup {
 namespace {
@@ -39,9 +43,11 @@ struct Builder {
       node.emplace(nd.id, static_cast<Index>(m.node_id.size()));
       // TC: 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all.
       static constexpr unsigned kTc[8] = {0, 1, 2, 4, 3, 6, 5, 7};
-      if (nd.tc > 0 && nd.tc < 8) {
-        m.fixed.push_back({static_cast<Index>(m.node_id.size()), kTc[nd.tc]});
-      }
+      // RC: the same codes for the rotations (shell nodes).
+      const unsigned dofs = (nd.tc > 0 && nd.tc < 8 ? kTc[nd.tc] : 0u) |
+                            (nd.rc > 0 && nd.rc < 8 ? kTc[nd.rc] << 3 : 0u);
+      if (dofs != 0)
+        m.fixed.push_back({static_cast<Index>(m.node_id.size()), dofs});
       m.node_id.push_back(nd.id);
       m.x0.push_back(nd.x);
       m.y0.push_back(nd.y);
@@ -65,97 +71,224 @@ struct Builder {
     }
   }
 
-  void parts_and_elements() {
-    std::unordered_map<int, const model::SectionSolidDesc*> sections;
-    for (const auto& s : d.solid_sections)
-      sections.emplace(s.id, &s);
-    std::unordered_map<int, const model::HourglassDesc*> hourglasses;
-    for (const auto& h : d.hourglasses)
-      hourglasses.emplace(h.id, &h);
-    std::unordered_map<int, Index> material;  // material id -> index in m.materials
-    const auto material_of = [&](int id) -> Index {
-      if (auto it = material.find(id); it != material.end())
-        return it->second;
-      for (const auto& e : d.elastic_materials) {
-        if (e.id == id)
-          m.materials.push_back(
-              core::ElasticMaterial{e.density, e.youngs_modulus, e.poisson_ratio});
+  // The runtime material of a deck material id (any law), created once.
+  std::unordered_map<int, Index> material_index;
+  Index material_of(int id) {
+    if (auto it = material_index.find(id); it != material_index.end())
+      return it->second;
+    const std::size_t before = m.materials.size();
+    for (const auto& e : d.elastic_materials) {
+      if (e.id == id)
+        m.materials.push_back(core::ElasticMaterial{e.density, e.youngs_modulus, e.poisson_ratio});
+    }
+    for (const auto& r : d.mooney_rivlin_materials) {
+      if (r.id == id)
+        m.materials.push_back(core::MooneyRivlinMaterial{r.density, r.poisson_ratio, r.a, r.b});
+    }
+    for (const auto& p : d.piecewise_linear_materials) {
+      if (p.id != id)
+        continue;
+      core::PiecewiseLinearPlasticity law;
+      law.density = p.density;
+      law.young = p.youngs_modulus;
+      law.poisson = p.poisson_ratio;
+      law.sigy = p.yield_stress;
+      law.etan = p.tangent_modulus;
+      // LCSS (yield stress against effective plastic strain) wins over the 8-point table.
+      if (p.lcss != 0) {
+        const core::LoadCurve& c = m.curves[static_cast<std::size_t>(curve.at(p.lcss))];
+        law.curve.plastic_strain = c.x;
+        law.curve.yield_stress = c.y;
+      } else if (!p.eps.empty()) {
+        law.curve.plastic_strain = p.eps;
+        law.curve.yield_stress = p.es;
       }
-      for (const auto& r : d.mooney_rivlin_materials) {
-        if (r.id == id) {
-          m.materials.push_back(core::MooneyRivlinMaterial{r.density, r.poisson_ratio, r.a, r.b});
-        }
+      m.materials.push_back(law);
+    }
+    for (const auto& p : d.power_law_materials) {
+      if (p.id != id)
+        continue;
+      core::PowerLawPlasticity law;
+      law.density = p.density;
+      law.young = p.youngs_modulus;
+      law.poisson = p.poisson_ratio;
+      law.k = p.k;
+      law.n = p.n;
+      law.sigy = p.sigy;
+      m.materials.push_back(law);
+    }
+    for (const auto& o : d.orthotropic_elastic_materials) {
+      if (o.id != id)
+        continue;
+      core::OrthotropicElasticMaterial law;
+      law.density = o.density;
+      law.ea = o.ea, law.eb = o.eb, law.ec = o.ec;
+      law.prba = o.prba, law.prca = o.prca, law.prcb = o.prcb;
+      law.gab = o.gab, law.gbc = o.gbc, law.gca = o.gca;
+      law.aopt = o.aopt;
+      for (int k = 0; k < 3; ++k) {
+        law.a[k] = o.a[static_cast<std::size_t>(k)];
+        law.d[k] = o.d[static_cast<std::size_t>(k)];
       }
-      if (m.materials.size() == material.size())
-        return -1;  // not a solid material
-      const auto index = static_cast<Index>(m.materials.size() - 1);
-      material.emplace(id, index);
-      return index;
-    };
+      m.materials.push_back(law);
+    }
+    for (const auto& r : d.rigid_materials) {
+      if (r.id != id)
+        continue;
+      m.materials.push_back(core::RigidMaterial{r.density, r.youngs_modulus, r.poisson_ratio,
+                                                static_cast<double>(r.cmo), r.con1, r.con2});
+    }
+    if (m.materials.size() == before)
+      return -1;
+    const auto index = static_cast<Index>(m.materials.size() - 1);
+    material_index.emplace(id, index);
+    return index;
+  }
 
-    std::unordered_map<int, std::size_t> block_of_part;
+  // The part's hourglass control: its *HOURGLASS, else *CONTROL_HOURGLASS, else IHQ 1, QM 0.1.
+  core::HourglassControl hourglass_of(const model::PartDesc& p, int max_ihq, const char* kind) {
+    core::HourglassControl hg;
+    if (d.control_hourglass) {
+      hg.ihq = d.control_hourglass->ihq;
+      hg.qm = d.control_hourglass->qh;
+    }
+    const model::HourglassDesc* h = nullptr;
+    for (const auto& x : d.hourglasses) {
+      if (x.id == p.hourglass_id)
+        h = &x;
+    }
+    if (p.hourglass_id != 0 && h != nullptr) {
+      if (h->ihq != 0)
+        hg.ihq = h->ihq;
+      hg.qm = h->qm;
+    }
+    if (hg.ihq < 1 || hg.ihq > max_ihq) {
+      error(h != nullptr ? h->where : p.where, "*HOURGLASS", "IHQ",
+            "hourglass type " + std::to_string(hg.ihq) + " is not supported for " + kind +
+                (max_ihq == 5 ? ": use 1-3 (viscous) or 4-5 (stiffness)" : ": use 1-3 (viscous)"));
+    }
+    return hg;
+  }
+
+  void parts_and_elements() {
+    std::unordered_map<int, const model::SectionSolidDesc*> solid_sections;
+    for (const auto& s : d.solid_sections)
+      solid_sections.emplace(s.id, &s);
+    std::unordered_map<int, const model::SectionShellDesc*> shell_sections;
+    for (const auto& s : d.shell_sections)
+      shell_sections.emplace(s.id, &s);
+
+    std::unordered_map<int, std::size_t> solid_block_of_part, shell_block_of_part;
     for (const model::PartDesc& p : d.parts) {
-      const auto sec = sections.find(p.section_id);
-      if (sec == sections.end())
-        continue;  // not a solid part; reported by validation
-      part.emplace(p.id, static_cast<Index>(m.parts.size()));
+      const auto solid = solid_sections.find(p.section_id);
+      const auto shell = shell_sections.find(p.section_id);
+      if (solid == solid_sections.end() && shell == shell_sections.end())
+        continue;  // validation
       const Index mat = material_of(p.material_id);
       if (mat < 0) {
         error(p.where, "*PART", "MID",
               "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
-                  " is not a solid material (*MAT_ELASTIC or *MAT_MOONEY-RIVLIN_RUBBER)");
+                  " is not defined by a supported *MAT_ keyword");
         continue;
       }
+      const core::Material& law = m.materials[static_cast<std::size_t>(mat)];
+      const bool rigid = std::holds_alternative<core::RigidMaterial>(law);
+      part.emplace(p.id, static_cast<Index>(m.parts.size()));
       m.parts.push_back(core::Part{p.id, p.title, mat});
-      core::SolidBlock b;
-      b.formulation = sec->second->elform == 2 ? core::SolidFormulation::selective_reduced
-                                               : core::SolidFormulation::one_point;
-      b.part = static_cast<Index>(m.parts.size() - 1);
-      b.material = mat;
-      // Hourglass: the part's *HOURGLASS, else *CONTROL_HOURGLASS, else IHQ 1, QM 0.1.
-      if (d.control_hourglass) {
-        b.hourglass.ihq = d.control_hourglass->ihq;
-        b.hourglass.qm = d.control_hourglass->qh;
+      const auto part_index = static_cast<Index>(m.parts.size() - 1);
+      if (solid != solid_sections.end()) {
+        if (!rigid && !element::supports_solids(law)) {
+          error(
+              p.where, "*PART", "MID",
+              "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
+                  " is not a law for solid elements (use *MAT_ELASTIC, *MAT_MOONEY-RIVLIN_RUBBER, "
+                  "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY or *MAT_RIGID)");
+          continue;
+        }
+        core::SolidBlock b;
+        b.formulation = solid->second->elform == 2 ? core::SolidFormulation::selective_reduced
+                                                   : core::SolidFormulation::one_point;
+        b.part = part_index;
+        b.material = mat;
+        b.hourglass = hourglass_of(p, 5, "solids");
+        solid_block_of_part.emplace(p.id, m.solid_blocks.size());
+        m.solid_blocks.push_back(std::move(b));
+      } else {
+        const model::SectionShellDesc& sec = *shell->second;
+        if (sec.elform != 2) {
+          error(sec.where, "*SECTION_SHELL", "ELFORM",
+                "ELFORM " + std::to_string(sec.elform) +
+                    " is not supported yet: plyform has the Belytschko-Tsay shell, ELFORM 2");
+          continue;
+        }
+        if (!rigid && !element::supports_shells(law)) {
+          error(p.where, "*PART", "MID",
+                "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
+                    " is not a law for shells (use *MAT_ELASTIC, *MAT_ORTHOTROPIC_ELASTIC, "
+                    "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY or *MAT_RIGID)");
+          continue;
+        }
+        if (sec.nip < 1 || sec.nip > 5) {
+          error(sec.where, "*SECTION_SHELL", "NIP",
+                "NIP " + std::to_string(sec.nip) + " is not supported: use 1 to 5");
+          continue;
+        }
+        core::ShellBlock b;
+        b.part = part_index;
+        b.material = mat;
+        b.nip = sec.nip;
+        b.shear_factor = sec.shear_factor;
+        b.hourglass = hourglass_of(p, 3, "shells");
+        shell_block_of_part.emplace(p.id, m.shell_blocks.size());
+        m.shell_blocks.push_back(std::move(b));
       }
-      if (p.hourglass_id != 0) {
-        const model::HourglassDesc& h = *hourglasses.at(p.hourglass_id);
-        if (h.ihq != 0)
-          b.hourglass.ihq = h.ihq;
-        b.hourglass.qm = h.qm;
-      }
-      if (b.hourglass.ihq < 1 || b.hourglass.ihq > 5) {
-        error(p.hourglass_id != 0 ? hourglasses.at(p.hourglass_id)->where : p.where, "*HOURGLASS",
-              "IHQ",
-              "hourglass type " + std::to_string(b.hourglass.ihq) +
-                  " is not supported for solids: use 1-3 (viscous) or 4-5 (stiffness)");
-      }
-      block_of_part.emplace(p.id, m.solid_blocks.size());
-      m.solid_blocks.push_back(std::move(b));
     }
     for (const model::ElementSolidDesc& e : d.solids) {
-      const auto it = block_of_part.find(e.part_id);
-      if (it == block_of_part.end()) {
-        error(e.where, "*ELEMENT_SOLID", "PID",
-              "element " + std::to_string(e.id) + ": part " + std::to_string(e.part_id) +
-                  " has no *SECTION_SOLID");
-        continue;
-      }
+      const auto it = solid_block_of_part.find(e.part_id);
+      if (it == solid_block_of_part.end())
+        continue;  // reported with its part
       core::SolidBlock& b = m.solid_blocks[it->second];
       b.element_id.push_back(e.id);
       for (int n : e.nodes)
         b.connectivity.push_back(node.at(n));
+    }
+    for (const model::ElementShellDesc& e : d.shells) {
+      const auto it = shell_block_of_part.find(e.part_id);
+      if (it == shell_block_of_part.end())
+        continue;
+      core::ShellBlock& b = m.shell_blocks[it->second];
+      // Thickness: the element's THIC card where given, else the section's T1..T4.
+      const model::SectionShellDesc* sec = nullptr;
+      for (const auto& p : d.parts) {
+        if (p.id == e.part_id) {
+          for (const auto& s : d.shell_sections) {
+            if (s.id == p.section_id)
+              sec = &s;
+          }
+        }
+      }
+      b.element_id.push_back(e.id);
+      for (int k = 0; k < 4; ++k) {
+        b.connectivity.push_back(node.at(e.nodes[static_cast<std::size_t>(k)]));
+        double t = e.has_thickness_card ? e.thickness[static_cast<std::size_t>(k)] : 0.0;
+        if (!(t > 0.0) && sec != nullptr)
+          t = sec->thickness[static_cast<std::size_t>(k)];
+        if (!(t > 0.0) && sec != nullptr)
+          t = sec->thickness[0];
+        b.thickness.push_back(t);
+      }
     }
   }
 
   void boundary_conditions() {
     for (const model::BoundarySpcDesc& s : d.spcs) {
       unsigned dofs = 0;
-      for (int k = 0; k < 3; ++k) {
+      for (int k = 0; k < 6; ++k) {
         if (s.fixed[static_cast<std::size_t>(k)])
           dofs |= 1u << k;
       }
       if (dofs == 0)
-        continue;  // rotations only: solids carry no rotational freedom
+        continue;
       for (Index n : targets(s.target, s.target_id))
         m.fixed.push_back({n, dofs});
     }
@@ -183,6 +316,26 @@ struct Builder {
       for (Index n : targets(l.target, l.target_id)) {
         m.loads.push_back(core::NodalLoad{n, l.dof - 1, curve.at(l.curve_id), l.scale});
       }
+    }
+  }
+
+  void rigid_bodies() {
+    for (const model::PrescribedMotionRigidDesc& r : d.rigid_motions) {
+      core::RigidMotion rm;
+      rm.part = part.at(r.part_id);
+      rm.dof = r.dof <= 3 ? r.dof - 1 : r.dof - 2;  // 1-3 translations, 5-7 rotations
+      rm.kind = r.vad == 0   ? core::MotionKind::velocity
+                : r.vad == 1 ? core::MotionKind::acceleration
+                             : core::MotionKind::displacement;
+      rm.curve = curve.at(r.curve_id);
+      rm.scale = r.scale;
+      rm.birth = r.birth;
+      rm.death = r.death;
+      m.rigid_motions.push_back(rm);
+    }
+    for (const model::LoadRigidBodyDesc& l : d.rigid_body_loads) {
+      m.rigid_loads.push_back(core::RigidLoad{
+          part.at(l.part_id), l.dof <= 3 ? l.dof - 1 : l.dof - 2, curve.at(l.curve_id), l.scale});
     }
   }
 
@@ -271,12 +424,13 @@ struct Builder {
 }  // namespace
 
 BuildResult build(const model::ModelDesc& desc) {
-  Builder b{desc, {}, {}, {}, {}, {}, {}, {}};
+  Builder b{desc, {}, {}, {}, {}, {}, {}, {}, {}};
   b.m.title = desc.title;
   b.nodes();
   b.curves();
   b.parts_and_elements();
   b.boundary_conditions();
+  b.rigid_bodies();
   b.initial_velocities();
   b.controls_and_output();
   if (!core::colour_element_blocks(b.m)) {

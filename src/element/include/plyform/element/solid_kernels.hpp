@@ -36,6 +36,7 @@ struct NodalForces {
 struct SolidBlockState {
   int points = 1;  ///< integration points per element
   std::vector<double> s[6];
+  std::vector<double> eps_p;      ///< effective plastic strain per point (plasticity laws)
   std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
   std::vector<double> volume;     ///< current volume per element
   /// sqrt(scaled mass / physical mass) per element (mass scaling): the element's stable step

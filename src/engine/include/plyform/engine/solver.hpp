@@ -10,6 +10,7 @@
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
+#include "plyform/rigid/rigid_bodies.hpp"
 
 namespace plyform::engine {
 
@@ -34,6 +35,7 @@ struct Snapshot {
   const NodalState* nodes = nullptr;
   const std::vector<element::SolidBlockState>* solids = nullptr;
   const std::vector<element::ShellBlockState>* shells = nullptr;
+  const rigid::RigidBodies* rigid = nullptr;  ///< the rigid bodies (may be empty)
 };
 
 class OutputSink {
