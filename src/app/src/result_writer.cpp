@@ -1,6 +1,10 @@
 #include "result_writer.hpp"
 
+#include <algorithm>
 #include <limits>
+#include <variant>
+
+#include "plyform/element/shell_kernels.hpp"
 
 namespace plyform::app {
 
@@ -12,25 +16,49 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
   if (model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty()) {
     nodout_.emplace(outdir / output::nodout_file_name);
   }
+  bool rigid = false;
+  for (const auto& m : model.materials)
+    rigid = rigid || std::holds_alternative<core::RigidMaterial>(m);
+  if (rigid && model.output.glstat_dt > 0.0) {
+    rbdout_.emplace(outdir / "rbdout.csv",
+                    std::vector<std::string>{"time", "part", "fx", "fy", "fz", "mx", "my", "mz",
+                                             "x", "y", "z", "vx", "vy", "vz"});
+  }
   node_ids_.assign(model.node_id.begin(), model.node_id.end());
   for (const core::SolidBlock& b : model.solid_blocks) {
     for (std::size_t e = 0; e < b.size(); ++e) {
       // LS-DYNA's hexahedron order is VTK's; degenerate hexes stay hexahedra with repeated nodes.
-      for (int i = 0; i < 8; ++i)
+      for (int i = 0; i < 8; ++i) {
         connectivity_.push_back(b.connectivity[8 * e + static_cast<std::size_t>(i)]);
+      }
       offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
       cell_types_.push_back(output::vtk_cell::hexahedron);
       element_ids_.push_back(b.element_id[e]);
       part_ids_.push_back(model.parts[static_cast<std::size_t>(b.part)].id);
     }
   }
-  const std::size_t n = model.node_count();
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const core::Index* c = &b.connectivity[4 * e];
+      const bool triangle = c[2] == c[3];
+      for (int i = 0; i < (triangle ? 3 : 4); ++i)
+        connectivity_.push_back(c[i]);
+      offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
+      cell_types_.push_back(triangle ? output::vtk_cell::triangle : output::vtk_cell::quad);
+      element_ids_.push_back(b.element_id[e]);
+      part_ids_.push_back(model.parts[static_cast<std::size_t>(b.part)].id);
+    }
+  }
+  const std::size_t n = model.node_count(), cells = element_ids_.size();
   displacement_.resize(3 * n);
   velocity_.resize(3 * n);
   // No thermal field yet: NaN says "not defined" rather than a made-up temperature.
   temperature_.assign(n, std::numeric_limits<double>::quiet_NaN());
-  stress_.resize(6 * element_ids_.size());
-  plastic_strain_.assign(element_ids_.size(), 0.0);  // the solid laws so far are elastic
+  stress_.resize(6 * cells);
+  stress_top_.resize(6 * cells);
+  stress_bottom_.resize(6 * cells);
+  plastic_strain_.assign(cells, 0.0);
+  thickness_.assign(cells, std::numeric_limits<double>::quiet_NaN());  // solids: none
 }
 
 void ResultWriter::state(const engine::Snapshot& s) {
@@ -44,18 +72,62 @@ void ResultWriter::state(const engine::Snapshot& s) {
     velocity_[3 * i + 1] = ns.vny[i];
     velocity_[3 * i + 2] = ns.vnz[i];
   }
-  // Cell stress: the mean over the element's integration points.
+  // Solids: the mean over the integration points (top and bottom are the same).
   std::size_t cell = 0;
   for (const element::SolidBlockState& st : *s.solids) {
     const auto points = static_cast<std::size_t>(st.points);
     const std::size_t elements = st.volume.size();
     for (std::size_t e = 0; e < elements; ++e, ++cell) {
+      double eps = 0.0;
+      for (std::size_t q = 0; q < points; ++q)
+        eps += st.eps_p[e * points + q];
+      plastic_strain_[cell] = eps / static_cast<double>(points);
       for (int c = 0; c < 6; ++c) {
         double sum = 0.0;
         for (std::size_t q = 0; q < points; ++q)
           sum += st.s[c][e * points + q];
-        stress_[6 * cell + static_cast<std::size_t>(c)] = sum / static_cast<double>(points);
+        const auto k = 6 * cell + static_cast<std::size_t>(c);
+        stress_[k] = stress_top_[k] = stress_bottom_[k] = sum / static_cast<double>(points);
       }
+    }
+  }
+  // Shells: the co-rotational stresses turned to global axes at the bottom, middle and top
+  // points; plastic strain the largest through the thickness.
+  for (std::size_t b = 0; b < s.shells->size(); ++b) {
+    const element::ShellBlockState& st = (*s.shells)[b];
+    const core::ShellBlock& blk = model_.shell_blocks[b];
+    const auto nip = static_cast<std::size_t>(st.nip);
+    for (std::size_t e = 0; e < blk.size(); ++e, ++cell) {
+      double e1[3], e2[3], e3[3];
+      if (!element::shell_frame(blk, ns.x.data(), ns.y.data(), ns.z.data(), e, e1, e2, e3)) {
+        e1[0] = e2[1] = e3[2] = 1.0;
+        e1[1] = e1[2] = e2[0] = e2[2] = e3[0] = e3[1] = 0.0;
+      }
+      const double* axes[3] = {e1, e2, e3};
+      const auto global = [&](double w_lo, std::size_t lo, std::size_t hi, double* out) {
+        // Local tensor (szz = 0) at the weighted point, then sigma_g = sum_ab e_a sigma_ab e_b.
+        const auto at = [&](int c) {
+          return w_lo * st.s[c][e * nip + lo] + (1.0 - w_lo) * st.s[c][e * nip + hi];
+        };
+        const double l[3][3] = {{at(0), at(2), at(4)}, {at(2), at(1), at(3)}, {at(4), at(3), 0.0}};
+        static constexpr int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+        for (int c = 0; c < 6; ++c) {
+          double v = 0.0;
+          for (int a = 0; a < 3; ++a)
+            for (int bb = 0; bb < 3; ++bb)
+              v += axes[a][kPair[c][0]] * l[a][bb] * axes[bb][kPair[c][1]];
+          out[c] = v;
+        }
+      };
+      const std::size_t mid_hi = nip / 2, mid_lo = (nip - 1) / 2;
+      global(0.5, mid_lo, mid_hi, &stress_[6 * cell]);
+      global(1.0, nip - 1, nip - 1, &stress_top_[6 * cell]);
+      global(1.0, 0, 0, &stress_bottom_[6 * cell]);
+      double eps = 0.0;
+      for (std::size_t q = 0; q < nip; ++q)
+        eps = std::max(eps, st.eps_p[e * nip + q]);
+      plastic_strain_[cell] = eps;
+      thickness_[cell] = st.thickness[e];
     }
   }
   output::GridPiece piece;
@@ -68,10 +140,24 @@ void ResultWriter::state(const engine::Snapshot& s) {
   piece.point_data = {{"displacement", 3, displacement_},
                       {"velocity", 3, velocity_},
                       {"temperature", 1, temperature_}};
-  piece.cell_data = {{"stress", 6, stress_}, {"plastic_strain", 1, plastic_strain_}};
+  piece.cell_data = {{"stress", 6, stress_},
+                     {"stress_top", 6, stress_top_},
+                     {"stress_bottom", 6, stress_bottom_},
+                     {"plastic_strain", 1, plastic_strain_},
+                     {"thickness", 1, thickness_}};
   piece.point_ids = {{"node_id", node_ids_}};
   piece.cell_ids = {{"element_id", element_ids_}, {"part", part_ids_}};
   series_.write_state(s.time, piece);
+}
+
+void ResultWriter::rigid_bodies(double time, const rigid::RigidBodies& bodies) {
+  if (!rbdout_)
+    return;
+  for (const auto& b : bodies.report()) {
+    rbdout_->row({time, static_cast<double>(b.part_id), b.force[0], b.force[1], b.force[2],
+                  b.moment[0], b.moment[1], b.moment[2], b.centre[0], b.centre[1], b.centre[2],
+                  b.velocity[0], b.velocity[1], b.velocity[2]});
+  }
 }
 
 void ResultWriter::glstat(const engine::Energies& e) {

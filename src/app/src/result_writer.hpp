@@ -1,6 +1,6 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
-// glstat.csv, nodout.csv and the progress line, in OUTDIR.
+// glstat.csv, nodout.csv, rbdout.csv (rigid bodies) and the progress line, in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -24,6 +24,7 @@ class ResultWriter : public engine::OutputSink {
   void glstat(const engine::Energies& e) override;
   void nodout(const engine::Snapshot& s) override;
   void progress(double time, double end_time, long cycle, double dt, double wall) override;
+  void rigid_bodies(double time, const rigid::RigidBodies& bodies) override;
   void finish();
 
   [[nodiscard]] std::size_t states_written() const { return series_.states_written(); }
@@ -33,12 +34,14 @@ class ResultWriter : public engine::OutputSink {
   output::VtuSeries series_;
   std::optional<output::GlstatFile> glstat_;
   std::optional<output::NodoutFile> nodout_;
+  std::optional<output::CsvHistory> rbdout_;
   output::ProgressLine progress_;
   // The parts of every state that do not change: cells and ids.
   std::vector<std::int64_t> connectivity_, offsets_, node_ids_, element_ids_, part_ids_;
   std::vector<std::uint8_t> cell_types_;
   // Per-state buffers, reused.
-  std::vector<double> displacement_, velocity_, temperature_, stress_, plastic_strain_;
+  std::vector<double> displacement_, velocity_, temperature_, stress_, stress_top_, stress_bottom_,
+      plastic_strain_, thickness_;
   std::vector<output::NodoutRow> rows_;
 };
 

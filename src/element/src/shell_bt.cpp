@@ -421,6 +421,27 @@ ShellResult shell_forces(const core::ShellBlock& block, const core::Material& ma
       material);
 }
 
+bool shell_frame(const core::ShellBlock& block, const double* x, const double* y, const double* z,
+                 std::size_t e, double e1[3], double e2[3], double e3[3]) {
+  double c[4][3];
+  for (int i = 0; i < 4; ++i) {
+    const auto n =
+        static_cast<std::size_t>(block.connectivity[4 * e + static_cast<std::size_t>(i)]);
+    c[i][0] = x[n];
+    c[i][1] = y[n];
+    c[i][2] = z[n];
+  }
+  Geometry g;
+  if (!geometry(c, g))
+    return false;
+  for (int d = 0; d < 3; ++d) {
+    e1[d] = g.e1[d];
+    e2[d] = g.e2[d];
+    e3[d] = g.e3[d];
+  }
+  return true;
+}
+
 bool supports_shells(const core::Material& material) {
   return std::visit([](const auto& m) { return shell_law<std::decay_t<decltype(m)>>; }, material);
 }

@@ -561,6 +561,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     if (want_glstat) {
       sink.glstat(energies());
+      if (has_rigid)
+        sink.rigid_bodies(t, *rigid_bodies);
       while (next_glstat <= t + eps_t)
         next_glstat += out.glstat_dt;
     }

@@ -61,6 +61,11 @@ double shell_stable_dt(const core::ShellBlock& block, const core::Material& mate
 /// Reference area of element e.
 double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes, std::size_t e);
 
+/// The co-rotational frame of element e at the given coordinates (e1, e2 in the shell, e3 its
+/// normal), in which ShellBlockState keeps the stresses. False for a collapsed element.
+bool shell_frame(const core::ShellBlock& block, const double* x, const double* y, const double* z,
+                 std::size_t e, double e1[3], double e2[3], double e3[3]);
+
 /// True for the material laws the shell kernel integrates.
 bool supports_shells(const core::Material& material);
 

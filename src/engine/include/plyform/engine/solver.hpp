@@ -44,6 +44,8 @@ class OutputSink {
   virtual void state(const Snapshot& s) = 0;   ///< at the d3plot interval, first and last
   virtual void glstat(const Energies& e) = 0;  ///< at the glstat interval
   virtual void nodout(const Snapshot& s) = 0;  ///< at the nodout interval
+  /// At the glstat interval when the model has rigid bodies: their resultants and motion.
+  virtual void rigid_bodies(double /*time*/, const rigid::RigidBodies& /*bodies*/) {}
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
