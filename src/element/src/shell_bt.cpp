@@ -65,7 +65,7 @@ struct Geometry {
   double area;
 };
 
-bool geometry(const double x[4][3], Geometry& g) {
+inline bool geometry(const double x[4][3], Geometry& g) {
   const double r31[3] = {x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
   const double r42[3] = {x[3][0] - x[1][0], x[3][1] - x[1][1], x[3][2] - x[1][2]};
   double n[3] = {r31[1] * r42[2] - r31[2] * r42[1], r31[2] * r42[0] - r31[0] * r42[2],
@@ -227,7 +227,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       const double frame_spin = s1v / s1x;
       const double phi = (0.5 * (a10 - a01) - frame_spin) * dt;
       if (phi != 0.0) {
-        const double c = std::cos(phi), sn = std::sin(phi);
+        // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
+        const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
+        const double c = (1.0 - half_sq) * inv, sn = phi * inv;
         const std::size_t q0 = static_cast<std::size_t>(nip) * e;
         for (int k = 0; k < nip; ++k) {
           const std::size_t q = q0 + static_cast<std::size_t>(k);
