@@ -34,30 +34,6 @@ constexpr bool shell_law = std::is_same_v<M, core::ElasticMaterial> ||
                            std::is_same_v<M, core::PowerLawPlasticity> ||
                            std::is_same_v<M, core::OrthotropicElasticMaterial>;
 
-// Strain increments and stresses of the points of one element, for the material call.
-struct Points {
-  double dxx[kMaxNip], dyy[kMaxNip], dxy[kMaxNip], dyz[kMaxNip], dzx[kMaxNip], dzz[kMaxNip];
-};
-
-// The law's plane-stress update at the element's points (transverse shear increments carry
-// the shear factor already). `angle` is the material axis a from the local x axis (orthotropic).
-template <class M>
-void update_points(const M& m, int nip, const Points& p, double* sxx, double* syy, double* sxy,
-                   double* syz, double* szx, double* eps_p, double* dzz, double angle) {
-  const material::ShellPoints pts{p.dxx, p.dyy, p.dxy, p.dyz, p.dzx, sxx,
-                                  syy,   sxy,   syz,   szx,   eps_p, dzz};
-  if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
-    double c[kMaxNip], sn[kMaxNip];
-    for (int k = 0; k < nip; ++k) {
-      c[k] = std::cos(angle);
-      sn[k] = std::sin(angle);
-    }
-    material::shell_update(m, static_cast<std::size_t>(nip), pts, c, sn);
-  } else {
-    material::shell_update(m, static_cast<std::size_t>(nip), pts);
-  }
-}
-
 struct Geometry {
   double e1[3], e2[3], e3[3];  // co-rotational frame
   double xl[4], yl[4];         // local in-plane coordinates about the centroid
@@ -146,197 +122,231 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   const double kappa = block.shear_factor;
   const double qm = block.hourglass.qm;
   const double h[4] = {1.0, -1.0, 1.0, -1.0};
-  Points p;
-  double dzz[kMaxNip];
-  for (std::size_t e = begin; e < end; ++e) {
-    const core::Index* conn = &block.connectivity[4 * e];
-    double x[4][3], v[4][3], w[4][3];
-    for (int i = 0; i < 4; ++i) {
-      const auto n = static_cast<std::size_t>(conn[i]);
-      const double* pk = nv.packed + 6 * n;
-      for (int d = 0; d < 3; ++d) {
-        x[i][d] = pk[d];
-        v[i][d] = pk[3 + d];
-      }
-      w[i][0] = spin.wx[n];
-      w[i][1] = spin.wy[n];
-      w[i][2] = spin.wz[n];
-    }
-    Geometry g;
-    const double t = st.thickness[e];
-    if (!geometry(x, g) || !(t > 0.0)) {
-      r.failed = true;
-      r.failed_element = e;
-      return r;
-    }
-    st.area[e] = g.area;
-    const bool triangle = conn[2] == conn[3];
-    const double dte = st.dt_factor[e] * characteristic_length(x, g.area, triangle) / wave_speed;
-    if (dte < r.dt_min) {
-      r.dt_min = dte;
-      r.dt_element = e;
-    }
-    double vl[4][3], wl[4][3];
-    for (int i = 0; i < 4; ++i) {
-      rotate_in(g, v[i], vl[i]);
-      rotate_in(g, w[i], wl[i]);
-    }
-    // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
-    // u_x = u + z theta_y, u_y = v - z theta_x).
-    double dxx = 0, dyy = 0, gxy = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
-    double thx = 0, thy = 0;
-    for (int i = 0; i < 4; ++i) {
-      dxx += g.b1[i] * vl[i][0];
-      dyy += g.b2[i] * vl[i][1];
-      gxy += g.b2[i] * vl[i][0] + g.b1[i] * vl[i][1];
-      kx += g.b1[i] * wl[i][1];
-      ky -= g.b2[i] * wl[i][0];
-      kxy += g.b2[i] * wl[i][1] - g.b1[i] * wl[i][0];
-      gxz += g.b1[i] * vl[i][2];
-      gyz += g.b2[i] * vl[i][2];
-      thx += 0.25 * wl[i][0];
-      thy += 0.25 * wl[i][1];
-    }
-    gxz += thy;
-    gyz -= thx;
-    // The in-plane velocity gradient above is taken on the configuration at t_{n+1}; mapped to
-    // the mid-step configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly
-    // skew L_m (Hughes-Winget): no spurious membrane strain however far the shell turns.
-    {
-      double lx0 = dxx, lxy = 0.0, lyx = 0.0, ly1 = dyy;
+  // Elements go in chunks: the kinematics of each element first, then one material call for
+  // all the chunk's points (the law's loops then run over many points), then the forces.
+  constexpr std::size_t kChunk = 16;
+  constexpr std::size_t kPoints = kChunk * static_cast<std::size_t>(kMaxNip);
+  double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
+  double pdzz[kPoints], pcos[kPoints], psin[kPoints];
+  Geometry gk[kChunk];
+  double vlk[kChunk][4][3], wlk[kChunk][4][3], tk[kChunk];
+  const auto unip = static_cast<std::size_t>(nip);
+  for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
+    const std::size_t chunk = std::min(kChunk, end - c0);
+    for (std::size_t e = c0; e < c0 + chunk; ++e) {
+      const std::size_t k_el = e - c0;
+      const core::Index* conn = &block.connectivity[4 * e];
+      double x[4][3], v[4][3], w[4][3];
       for (int i = 0; i < 4; ++i) {
-        lxy += g.b2[i] * vl[i][0];
-        lyx += g.b1[i] * vl[i][1];
+        const auto n = static_cast<std::size_t>(conn[i]);
+        const double* pk = nv.packed + 6 * n;
+        for (int d = 0; d < 3; ++d) {
+          x[i][d] = pk[d];
+          v[i][d] = pk[3 + d];
+        }
+        w[i][0] = spin.wx[n];
+        w[i][1] = spin.wy[n];
+        w[i][2] = spin.wz[n];
       }
-      const double h2 = 0.5 * dt;
-      const double m00 = 1.0 - h2 * lx0, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * ly1;
-      const double det = m00 * m11 - m01 * m10;
-      const double i00 = m11 / det, i01 = -m01 / det, i10 = -m10 / det, i11 = m00 / det;
-      const double a00 = lx0 * i00 + lxy * i10, a01 = lx0 * i01 + lxy * i11;
-      const double a10 = lyx * i00 + ly1 * i10, a11 = lyx * i01 + ly1 * i11;
-      dxx = a00;
-      dyy = a11;
-      gxy = a01 + a10;
-      // The stored stresses turn with the frame (they are its components); the material's spin
-      // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
-      // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
-      // (Jaumann relative to the frame), so the result does not depend on which edges the frame
-      // follows, i.e. on the node numbering.
-      const double s1x = 0.5 * (g.xl[1] + g.xl[2] - g.xl[0] - g.xl[3]);
-      const double s1v = 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]);
-      const double frame_spin = s1v / s1x;
-      const double phi = (0.5 * (a10 - a01) - frame_spin) * dt;
-      if (phi != 0.0) {
-        // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
-        const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-        const double c = (1.0 - half_sq) * inv, sn = phi * inv;
-        const std::size_t q0 = static_cast<std::size_t>(nip) * e;
-        for (int k = 0; k < nip; ++k) {
-          const std::size_t q = q0 + static_cast<std::size_t>(k);
-          const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
-          st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
-          st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
-          st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
-          const double tzx = st.s[4][q], tyz = st.s[3][q];
-          st.s[4][q] = c * tzx - sn * tyz;
-          st.s[3][q] = sn * tzx + c * tyz;
+      Geometry& g = gk[k_el];
+      const double t = tk[k_el] = st.thickness[e];
+      if (!geometry(x, g) || !(t > 0.0)) {
+        r.failed = true;
+        r.failed_element = e;
+        return r;
+      }
+      st.area[e] = g.area;
+      const bool triangle = conn[2] == conn[3];
+      const double dte = st.dt_factor[e] * characteristic_length(x, g.area, triangle) / wave_speed;
+      if (dte < r.dt_min) {
+        r.dt_min = dte;
+        r.dt_element = e;
+      }
+      auto& vl = vlk[k_el];
+      auto& wl = wlk[k_el];
+      for (int i = 0; i < 4; ++i) {
+        rotate_in(g, v[i], vl[i]);
+        rotate_in(g, w[i], wl[i]);
+      }
+      // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
+      // u_x = u + z theta_y, u_y = v - z theta_x).
+      double dxx = 0, dyy = 0, gxy = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
+      double thx = 0, thy = 0;
+      for (int i = 0; i < 4; ++i) {
+        dxx += g.b1[i] * vl[i][0];
+        dyy += g.b2[i] * vl[i][1];
+        gxy += g.b2[i] * vl[i][0] + g.b1[i] * vl[i][1];
+        kx += g.b1[i] * wl[i][1];
+        ky -= g.b2[i] * wl[i][0];
+        kxy += g.b2[i] * wl[i][1] - g.b1[i] * wl[i][0];
+        gxz += g.b1[i] * vl[i][2];
+        gyz += g.b2[i] * vl[i][2];
+        thx += 0.25 * wl[i][0];
+        thy += 0.25 * wl[i][1];
+      }
+      gxz += thy;
+      gyz -= thx;
+      // The in-plane velocity gradient above is taken on the configuration at t_{n+1}; mapped to
+      // the mid-step configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly
+      // skew L_m (Hughes-Winget): no spurious membrane strain however far the shell turns.
+      {
+        double lx0 = dxx, lxy = 0.0, lyx = 0.0, ly1 = dyy;
+        for (int i = 0; i < 4; ++i) {
+          lxy += g.b2[i] * vl[i][0];
+          lyx += g.b1[i] * vl[i][1];
+        }
+        const double h2 = 0.5 * dt;
+        const double m00 = 1.0 - h2 * lx0, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * ly1;
+        const double det = m00 * m11 - m01 * m10;
+        const double i00 = m11 / det, i01 = -m01 / det, i10 = -m10 / det, i11 = m00 / det;
+        const double a00 = lx0 * i00 + lxy * i10, a01 = lx0 * i01 + lxy * i11;
+        const double a10 = lyx * i00 + ly1 * i10, a11 = lyx * i01 + ly1 * i11;
+        dxx = a00;
+        dyy = a11;
+        gxy = a01 + a10;
+        // The stored stresses turn with the frame (they are its components); the material's spin
+        // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
+        // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
+        // (Jaumann relative to the frame), so the result does not depend on which edges the frame
+        // follows, i.e. on the node numbering.
+        const double s1x = 0.5 * (g.xl[1] + g.xl[2] - g.xl[0] - g.xl[3]);
+        const double s1v = 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]);
+        const double frame_spin = s1v / s1x;
+        const double phi = (0.5 * (a10 - a01) - frame_spin) * dt;
+        if (phi != 0.0) {
+          // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
+          const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
+          const double c = (1.0 - half_sq) * inv, sn = phi * inv;
+          const std::size_t q0 = static_cast<std::size_t>(nip) * e;
+          for (int k = 0; k < nip; ++k) {
+            const std::size_t q = q0 + static_cast<std::size_t>(k);
+            const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
+            st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
+            st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
+            st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
+            const double tzx = st.s[4][q], tyz = st.s[3][q];
+            st.s[4][q] = c * tzx - sn * tyz;
+            st.s[3][q] = sn * tzx + c * tyz;
+          }
+        }
+      }
+      // Strain increments at the thickness points (tensor shears; the shear factor scales the
+      // transverse shear).
+      for (int k = 0; k < nip; ++k) {
+        const double z = 0.5 * t * zeta[k];
+        const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
+        pdxx[at] = (dxx + z * kx) * dt;
+        pdyy[at] = (dyy + z * ky) * dt;
+        pdxy[at] = 0.5 * (gxy + z * kxy) * dt;
+        pdyz[at] = 0.5 * kappa * gyz * dt;
+        pdzx[at] = 0.5 * kappa * gxz * dt;
+      }
+      if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
+        // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
+        // both projected on the shell.
+        double a3[3];
+        for (int d = 0; d < 3; ++d)
+          a3[d] = mat.aopt == 2 ? mat.a[d] : x[1][d] - x[0][d];
+        const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
+        const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
+        const double angle = std::atan2(ay, ax);
+        for (std::size_t k = 0; k < unip; ++k) {
+          pcos[k_el * unip + k] = std::cos(angle);
+          psin[k_el * unip + k] = std::sin(angle);
         }
       }
     }
-    // Strain increments at the thickness points (tensor shears; the shear factor scales the
-    // transverse shear).
-    for (int k = 0; k < nip; ++k) {
-      const double z = 0.5 * t * zeta[k];
-      p.dxx[k] = (dxx + z * kx) * dt;
-      p.dyy[k] = (dyy + z * ky) * dt;
-      p.dxy[k] = 0.5 * (gxy + z * kxy) * dt;
-      p.dyz[k] = 0.5 * kappa * gyz * dt;
-      p.dzx[k] = 0.5 * kappa * gxz * dt;
-    }
-    const std::size_t q0 = static_cast<std::size_t>(nip) * e;
-    double angle = 0.0;
-    if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
-      // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
-      // both projected on the shell.
-      double a3[3];
-      for (int d = 0; d < 3; ++d)
-        a3[d] = mat.aopt == 2 ? mat.a[d] : x[1][d] - x[0][d];
-      const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
-      const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
-      angle = std::atan2(ay, ax);
-    }
-    update_points(mat, nip, p, &st.s[0][q0], &st.s[1][q0], &st.s[2][q0], &st.s[3][q0], &st.s[4][q0],
-                  &st.eps_p[q0], dzz, angle);
-    // Resultants over the thickness, and the thickness update from the mean normal strain.
-    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
-    for (int k = 0; k < nip; ++k) {
-      const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
-      const std::size_t q = q0 + static_cast<std::size_t>(k);
-      nxx += wk * st.s[0][q];
-      nyy += wk * st.s[1][q];
-      nxy += wk * st.s[2][q];
-      mxx += wk * z * st.s[0][q];
-      myy += wk * z * st.s[1][q];
-      mxy += wk * z * st.s[2][q];
-      qy += wk * st.s[3][q];
-      qx += wk * st.s[4][q];
-      tz += 0.5 * weight[k] * dzz[k];
-    }
-    st.thickness[e] = t * (1.0 + tz);
-    const double a = g.area;
-    double fl[4][3], ml[4][2];
-    for (int i = 0; i < 4; ++i) {
-      fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);
-      fl[i][1] = a * (g.b2[i] * nyy + g.b1[i] * nxy);
-      fl[i][2] = a * (g.b1[i] * qx + g.b2[i] * qy);
-      ml[i][0] = -a * (g.b2[i] * myy + g.b1[i] * mxy) - 0.25 * a * qy;
-      ml[i][1] = a * (g.b1[i] * mxx + g.b2[i] * mxy) + 0.25 * a * qx;
-    }
-    if (qm > 0.0) {
-      // Viscous hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane
-      // and the two rotations, with gamma = h - (h . x) b1 - (h . y) b2 orthogonal to the
-      // linear fields.
-      double hx = 0, hy = 0;
-      for (int i = 0; i < 4; ++i) {
-        hx += h[i] * g.xl[i];
-        hy += h[i] * g.yl[i];
-      }
-      double gam[4];
-      for (int i = 0; i < 4; ++i)
-        gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
-      double qv[5] = {0, 0, 0, 0, 0};
-      for (int i = 0; i < 4; ++i) {
-        qv[0] += gam[i] * vl[i][0];
-        qv[1] += gam[i] * vl[i][1];
-        qv[2] += gam[i] * vl[i][2];
-        qv[3] += gam[i] * wl[i][0];
-        qv[4] += gam[i] * wl[i][1];
-      }
-      const double sa = std::sqrt(a);
-      const double cm = 0.25 * qm * rho * wave_speed * t * sa;
-      const double cw = qm * rho * wave_speed * t * t * t / (12.0 * sa);
-      const double ct = qm * rho * wave_speed * t * t * t * sa / 48.0;
-      const double coef[5] = {cm, cm, cw, ct, ct};
-      double power = 0.0;
-      for (int j = 0; j < 5; ++j)
-        power += coef[j] * qv[j] * qv[j];
-      r.hourglass_energy += power * dt;
-      for (int i = 0; i < 4; ++i) {
-        fl[i][0] += cm * qv[0] * gam[i];
-        fl[i][1] += cm * qv[1] * gam[i];
-        fl[i][2] += cw * qv[2] * gam[i];
-        ml[i][0] += ct * qv[3] * gam[i];
-        ml[i][1] += ct * qv[4] * gam[i];
+    {
+      const std::size_t q0 = unip * c0;
+      const material::ShellPoints pts{pdxx,         pdyy,         pdxy,          pdyz,
+                                      pdzx,         &st.s[0][q0], &st.s[1][q0],  &st.s[2][q0],
+                                      &st.s[3][q0], &st.s[4][q0], &st.eps_p[q0], pdzz};
+      if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
+        material::shell_update(mat, unip * chunk, pts, pcos, psin);
+      } else {
+        material::shell_update(mat, unip * chunk, pts);
       }
     }
-    // Back to global axes, added to the nodes (a triangle's fourth node is its third).
-    for (int i = 0; i < 4; ++i) {
-      const auto n = static_cast<std::size_t>(conn[i]);
-      for (int d = 0; d < 3; ++d) {
-        const double f = g.e1[d] * fl[i][0] + g.e2[d] * fl[i][1] + g.e3[d] * fl[i][2];
-        const double m = g.e1[d] * ml[i][0] + g.e2[d] * ml[i][1];
-        (d == 0 ? out.fx : d == 1 ? out.fy : out.fz)[n] += f;
-        (d == 0 ? mom.mx : d == 1 ? mom.my : mom.mz)[n] += m;
+    for (std::size_t e = c0; e < c0 + chunk; ++e) {
+      const std::size_t k_el = e - c0;
+      const core::Index* conn = &block.connectivity[4 * e];
+      const Geometry& g = gk[k_el];
+      const auto& vl = vlk[k_el];
+      const auto& wl = wlk[k_el];
+      const double t = tk[k_el];
+      const std::size_t q0 = unip * e;
+      const double* dzz = &pdzz[unip * k_el];
+      // Resultants over the thickness, and the thickness update from the mean normal strain.
+      double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
+      for (int k = 0; k < nip; ++k) {
+        const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
+        const std::size_t q = q0 + static_cast<std::size_t>(k);
+        nxx += wk * st.s[0][q];
+        nyy += wk * st.s[1][q];
+        nxy += wk * st.s[2][q];
+        mxx += wk * z * st.s[0][q];
+        myy += wk * z * st.s[1][q];
+        mxy += wk * z * st.s[2][q];
+        qy += wk * st.s[3][q];
+        qx += wk * st.s[4][q];
+        tz += 0.5 * weight[k] * dzz[k];
+      }
+      st.thickness[e] = t * (1.0 + tz);
+      const double a = g.area;
+      double fl[4][3], ml[4][2];
+      for (int i = 0; i < 4; ++i) {
+        fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);
+        fl[i][1] = a * (g.b2[i] * nyy + g.b1[i] * nxy);
+        fl[i][2] = a * (g.b1[i] * qx + g.b2[i] * qy);
+        ml[i][0] = -a * (g.b2[i] * myy + g.b1[i] * mxy) - 0.25 * a * qy;
+        ml[i][1] = a * (g.b1[i] * mxx + g.b2[i] * mxy) + 0.25 * a * qx;
+      }
+      if (qm > 0.0) {
+        // Viscous hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane
+        // and the two rotations, with gamma = h - (h . x) b1 - (h . y) b2 orthogonal to the
+        // linear fields.
+        double hx = 0, hy = 0;
+        for (int i = 0; i < 4; ++i) {
+          hx += h[i] * g.xl[i];
+          hy += h[i] * g.yl[i];
+        }
+        double gam[4];
+        for (int i = 0; i < 4; ++i)
+          gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
+        double qv[5] = {0, 0, 0, 0, 0};
+        for (int i = 0; i < 4; ++i) {
+          qv[0] += gam[i] * vl[i][0];
+          qv[1] += gam[i] * vl[i][1];
+          qv[2] += gam[i] * vl[i][2];
+          qv[3] += gam[i] * wl[i][0];
+          qv[4] += gam[i] * wl[i][1];
+        }
+        const double sa = std::sqrt(a);
+        const double cm = 0.25 * qm * rho * wave_speed * t * sa;
+        const double cw = qm * rho * wave_speed * t * t * t / (12.0 * sa);
+        const double ct = qm * rho * wave_speed * t * t * t * sa / 48.0;
+        const double coef[5] = {cm, cm, cw, ct, ct};
+        double power = 0.0;
+        for (int j = 0; j < 5; ++j)
+          power += coef[j] * qv[j] * qv[j];
+        r.hourglass_energy += power * dt;
+        for (int i = 0; i < 4; ++i) {
+          fl[i][0] += cm * qv[0] * gam[i];
+          fl[i][1] += cm * qv[1] * gam[i];
+          fl[i][2] += cw * qv[2] * gam[i];
+          ml[i][0] += ct * qv[3] * gam[i];
+          ml[i][1] += ct * qv[4] * gam[i];
+        }
+      }
+      // Back to global axes, added to the nodes (a triangle's fourth node is its third).
+      for (int i = 0; i < 4; ++i) {
+        const auto n = static_cast<std::size_t>(conn[i]);
+        for (int d = 0; d < 3; ++d) {
+          const double f = g.e1[d] * fl[i][0] + g.e2[d] * fl[i][1] + g.e3[d] * fl[i][2];
+          const double m = g.e1[d] * ml[i][0] + g.e2[d] * ml[i][1];
+          (d == 0 ? out.fx : d == 1 ? out.fy : out.fz)[n] += f;
+          (d == 0 ? mom.mx : d == 1 ? mom.my : mom.mz)[n] += m;
+        }
       }
     }
   }
