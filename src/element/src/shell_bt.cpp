@@ -104,12 +104,6 @@ double characteristic_length(const double x[4][3], double area, bool triangle) {
   return lmax > 0.0 ? (triangle ? 2.0 : 1.0) * area / lmax : 0.0;
 }
 
-void rotate_in(const Geometry& g, const double v[3], double out[3]) {
-  out[0] = g.e1[0] * v[0] + g.e1[1] * v[1] + g.e1[2] * v[2];
-  out[1] = g.e2[0] * v[0] + g.e2[1] * v[1] + g.e2[2] * v[2];
-  out[2] = g.e3[0] * v[0] + g.e3[1] * v[1] + g.e3[2] * v[2];
-}
-
 template <class M>
 ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                const NodalView& nv, const NodalSpin& spin, double dt, std::size_t begin,
@@ -131,103 +125,186 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   Geometry gk[kChunk];
   double vlk[kChunk][4][3], wlk[kChunk][4][3], tk[kChunk];
   const auto unip = static_cast<std::size_t>(nip);
+  alignas(64) double LX[4][kChunk], LY[4][kChunk], LZ[4][kChunk];
+  alignas(64) double LVX[4][kChunk], LVY[4][kChunk], LVZ[4][kChunk];
+  alignas(64) double LWX[4][kChunk], LWY[4][kChunk], LWZ[4][kChunk];
+  alignas(64) double E[9][kChunk], XL[4][kChunk], YL[4][kChunk], B1[4][kChunk], B2[4][kChunk];
+  alignas(64) double VL[12][kChunk], WL[12][kChunk], RATE[9][kChunk];
+  alignas(64) double AREA[kChunk], LEN[kChunk], TRI[kChunk];
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
     const std::size_t chunk = std::min(kChunk, end - c0);
+    // Stage A, lane-wise over the chunk (vectorised across elements): gather, co-rotational
+    // frame, local coordinates and gradients, local velocities, rates. Padding lanes repeat
+    // the chunk's first element; their results are dropped.
+    for (std::size_t k = 0; k < kChunk; ++k) {
+      const core::Index* cn = &block.connectivity[4 * (c0 + (k < chunk ? k : 0))];
+      for (int i = 0; i < 4; ++i) {
+        const auto n = static_cast<std::size_t>(cn[i]);
+        const double* pk = nv.packed + 6 * n;
+        LX[i][k] = pk[0];
+        LY[i][k] = pk[1];
+        LZ[i][k] = pk[2];
+        LVX[i][k] = pk[3];
+        LVY[i][k] = pk[4];
+        LVZ[i][k] = pk[5];
+        LWX[i][k] = spin.wx[n];
+        LWY[i][k] = spin.wy[n];
+        LWZ[i][k] = spin.wz[n];
+      }
+      TRI[k] = cn[2] == cn[3] ? 2.0 : 1.0;
+    }
+    for (std::size_t k = 0; k < kChunk; ++k) {
+      const double r31x = LX[2][k] - LX[0][k], r31y = LY[2][k] - LY[0][k],
+                   r31z = LZ[2][k] - LZ[0][k];
+      const double r42x = LX[3][k] - LX[1][k], r42y = LY[3][k] - LY[1][k],
+                   r42z = LZ[3][k] - LZ[1][k];
+      double nx = r31y * r42z - r31z * r42y, ny = r31z * r42x - r31x * r42z,
+             nz = r31x * r42y - r31y * r42x;
+      const double ninv = 1.0 / std::sqrt(nx * nx + ny * ny + nz * nz);
+      nx *= ninv, ny *= ninv, nz *= ninv;
+      double sx = 0.5 * (LX[1][k] + LX[2][k] - LX[0][k] - LX[3][k]);
+      double sy = 0.5 * (LY[1][k] + LY[2][k] - LY[0][k] - LY[3][k]);
+      double sz = 0.5 * (LZ[1][k] + LZ[2][k] - LZ[0][k] - LZ[3][k]);
+      const double sn = sx * nx + sy * ny + sz * nz;
+      sx -= sn * nx, sy -= sn * ny, sz -= sn * nz;
+      const double sinv = 1.0 / std::sqrt(sx * sx + sy * sy + sz * sz);
+      const double e1x = sx * sinv, e1y = sy * sinv, e1z = sz * sinv;
+      const double e2x = ny * e1z - nz * e1y, e2y = nz * e1x - nx * e1z, e2z = nx * e1y - ny * e1x;
+      E[0][k] = e1x, E[1][k] = e1y, E[2][k] = e1z;
+      E[3][k] = e2x, E[4][k] = e2y, E[5][k] = e2z;
+      E[6][k] = nx, E[7][k] = ny, E[8][k] = nz;
+      const double cx = 0.25 * (LX[0][k] + LX[1][k] + LX[2][k] + LX[3][k]);
+      const double cy = 0.25 * (LY[0][k] + LY[1][k] + LY[2][k] + LY[3][k]);
+      const double cz = 0.25 * (LZ[0][k] + LZ[1][k] + LZ[2][k] + LZ[3][k]);
+      double xl[4], yl[4], lmax2 = 0.0;
+      for (int i = 0; i < 4; ++i) {
+        const double rx = LX[i][k] - cx, ry = LY[i][k] - cy, rz = LZ[i][k] - cz;
+        xl[i] = rx * e1x + ry * e1y + rz * e1z;
+        yl[i] = rx * e2x + ry * e2y + rz * e2z;
+        XL[i][k] = xl[i];
+        YL[i][k] = yl[i];
+        const int j = (i + 1) % 4;
+        const double dx = LX[j][k] - LX[i][k], dy = LY[j][k] - LY[i][k], dz = LZ[j][k] - LZ[i][k];
+        lmax2 = std::max(lmax2, dx * dx + dy * dy + dz * dz);
+      }
+      const double area =
+          0.5 * ((xl[2] - xl[0]) * (yl[3] - yl[1]) + (xl[1] - xl[3]) * (yl[2] - yl[0]));
+      AREA[k] = area;
+      LEN[k] = TRI[k] * area / std::sqrt(lmax2);
+      const double inv2a = 0.5 / area;
+      double b1[4], b2[4];
+      b1[0] = (yl[1] - yl[3]) * inv2a;
+      b1[1] = (yl[2] - yl[0]) * inv2a;
+      b1[2] = (yl[3] - yl[1]) * inv2a;
+      b1[3] = (yl[0] - yl[2]) * inv2a;
+      b2[0] = (xl[3] - xl[1]) * inv2a;
+      b2[1] = (xl[0] - xl[2]) * inv2a;
+      b2[2] = (xl[1] - xl[3]) * inv2a;
+      b2[3] = (xl[2] - xl[0]) * inv2a;
+      double dxx = 0, dyy = 0, lxy = 0, lyx = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
+      double thx = 0, thy = 0;
+      double vy_loc[4];
+      for (int i = 0; i < 4; ++i) {
+        B1[i][k] = b1[i];
+        B2[i][k] = b2[i];
+        const double vxl = LVX[i][k] * e1x + LVY[i][k] * e1y + LVZ[i][k] * e1z;
+        const double vyl = LVX[i][k] * e2x + LVY[i][k] * e2y + LVZ[i][k] * e2z;
+        const double vzl = LVX[i][k] * nx + LVY[i][k] * ny + LVZ[i][k] * nz;
+        const double wxl = LWX[i][k] * e1x + LWY[i][k] * e1y + LWZ[i][k] * e1z;
+        const double wyl = LWX[i][k] * e2x + LWY[i][k] * e2y + LWZ[i][k] * e2z;
+        const double wzl = LWX[i][k] * nx + LWY[i][k] * ny + LWZ[i][k] * nz;
+        VL[3 * i][k] = vxl, VL[3 * i + 1][k] = vyl, VL[3 * i + 2][k] = vzl;
+        WL[3 * i][k] = wxl, WL[3 * i + 1][k] = wyl, WL[3 * i + 2][k] = wzl;
+        vy_loc[i] = vyl;
+        // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
+        // u_x = u + z theta_y, u_y = v - z theta_x).
+        dxx += b1[i] * vxl;
+        dyy += b2[i] * vyl;
+        lxy += b2[i] * vxl;
+        lyx += b1[i] * vyl;
+        kx += b1[i] * wyl;
+        ky -= b2[i] * wxl;
+        kxy += b2[i] * wyl - b1[i] * wxl;
+        gxz += b1[i] * vzl;
+        gyz += b2[i] * vzl;
+        thx += 0.25 * wxl;
+        thy += 0.25 * wyl;
+      }
+      // The in-plane gradient is taken on the configuration at t_{n+1}; mapped to the mid-step
+      // configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly skew L_m
+      // (Hughes-Winget): no spurious membrane strain however far the shell turns.
+      const double h2 = 0.5 * dt;
+      const double m00 = 1.0 - h2 * dxx, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * dyy;
+      const double idet = 1.0 / (m00 * m11 - m01 * m10);
+      const double i00 = m11 * idet, i01 = -m01 * idet, i10 = -m10 * idet, i11 = m00 * idet;
+      const double a00 = dxx * i00 + lxy * i10, a01 = dxx * i01 + lxy * i11;
+      const double a10 = lyx * i00 + dyy * i10, a11 = lyx * i01 + dyy * i11;
+      // The stored stresses turn with the frame (they are its components); the material's spin
+      // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
+      // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
+      // (Jaumann relative to the frame), so the result does not depend on which edges the
+      // frame follows, i.e. on the node numbering.
+      const double s1x = 0.5 * (xl[1] + xl[2] - xl[0] - xl[3]);
+      const double s1v = 0.5 * (vy_loc[1] + vy_loc[2] - vy_loc[0] - vy_loc[3]);
+      RATE[0][k] = a00;
+      RATE[1][k] = a11;
+      RATE[2][k] = a01 + a10;
+      RATE[3][k] = kx;
+      RATE[4][k] = ky;
+      RATE[5][k] = kxy;
+      RATE[6][k] = gxz + thy;
+      RATE[7][k] = gyz - thx;
+      RATE[8][k] = (0.5 * (a10 - a01) - s1v / s1x) * dt;
+    }
+    // Per element: checks, the stable step, the stresses turned by the relative spin, the
+    // strain increments at the thickness points, and the data the force stage needs.
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
-      const core::Index* conn = &block.connectivity[4 * e];
-      double x[4][3], v[4][3], w[4][3];
-      for (int i = 0; i < 4; ++i) {
-        const auto n = static_cast<std::size_t>(conn[i]);
-        const double* pk = nv.packed + 6 * n;
-        for (int d = 0; d < 3; ++d) {
-          x[i][d] = pk[d];
-          v[i][d] = pk[3 + d];
-        }
-        w[i][0] = spin.wx[n];
-        w[i][1] = spin.wy[n];
-        w[i][2] = spin.wz[n];
-      }
-      Geometry& g = gk[k_el];
       const double t = tk[k_el] = st.thickness[e];
-      if (!geometry(x, g) || !(t > 0.0)) {
+      const double area = AREA[k_el];
+      if (!(area > 0.0) || !(t > 0.0) || !std::isfinite(E[0][k_el] + E[6][k_el])) {
         r.failed = true;
         r.failed_element = e;
         return r;
       }
-      st.area[e] = g.area;
-      const bool triangle = conn[2] == conn[3];
-      const double dte = st.dt_factor[e] * characteristic_length(x, g.area, triangle) / wave_speed;
+      st.area[e] = area;
+      const double dte = st.dt_factor[e] * LEN[k_el] / wave_speed;
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = e;
       }
-      auto& vl = vlk[k_el];
-      auto& wl = wlk[k_el];
-      for (int i = 0; i < 4; ++i) {
-        rotate_in(g, v[i], vl[i]);
-        rotate_in(g, w[i], wl[i]);
+      Geometry& g = gk[k_el];
+      for (int d = 0; d < 3; ++d) {
+        g.e1[d] = E[d][k_el];
+        g.e2[d] = E[3 + d][k_el];
+        g.e3[d] = E[6 + d][k_el];
       }
-      // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
-      // u_x = u + z theta_y, u_y = v - z theta_x).
-      double dxx = 0, dyy = 0, gxy = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
-      double thx = 0, thy = 0;
       for (int i = 0; i < 4; ++i) {
-        dxx += g.b1[i] * vl[i][0];
-        dyy += g.b2[i] * vl[i][1];
-        gxy += g.b2[i] * vl[i][0] + g.b1[i] * vl[i][1];
-        kx += g.b1[i] * wl[i][1];
-        ky -= g.b2[i] * wl[i][0];
-        kxy += g.b2[i] * wl[i][1] - g.b1[i] * wl[i][0];
-        gxz += g.b1[i] * vl[i][2];
-        gyz += g.b2[i] * vl[i][2];
-        thx += 0.25 * wl[i][0];
-        thy += 0.25 * wl[i][1];
-      }
-      gxz += thy;
-      gyz -= thx;
-      // The in-plane velocity gradient above is taken on the configuration at t_{n+1}; mapped to
-      // the mid-step configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly
-      // skew L_m (Hughes-Winget): no spurious membrane strain however far the shell turns.
-      {
-        double lx0 = dxx, lxy = 0.0, lyx = 0.0, ly1 = dyy;
-        for (int i = 0; i < 4; ++i) {
-          lxy += g.b2[i] * vl[i][0];
-          lyx += g.b1[i] * vl[i][1];
+        g.xl[i] = XL[i][k_el];
+        g.yl[i] = YL[i][k_el];
+        g.b1[i] = B1[i][k_el];
+        g.b2[i] = B2[i][k_el];
+        for (int d = 0; d < 3; ++d) {
+          vlk[k_el][i][d] = VL[3 * i + d][k_el];
+          wlk[k_el][i][d] = WL[3 * i + d][k_el];
         }
-        const double h2 = 0.5 * dt;
-        const double m00 = 1.0 - h2 * lx0, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * ly1;
-        const double det = m00 * m11 - m01 * m10;
-        const double i00 = m11 / det, i01 = -m01 / det, i10 = -m10 / det, i11 = m00 / det;
-        const double a00 = lx0 * i00 + lxy * i10, a01 = lx0 * i01 + lxy * i11;
-        const double a10 = lyx * i00 + ly1 * i10, a11 = lyx * i01 + ly1 * i11;
-        dxx = a00;
-        dyy = a11;
-        gxy = a01 + a10;
-        // The stored stresses turn with the frame (they are its components); the material's spin
-        // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
-        // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
-        // (Jaumann relative to the frame), so the result does not depend on which edges the frame
-        // follows, i.e. on the node numbering.
-        const double s1x = 0.5 * (g.xl[1] + g.xl[2] - g.xl[0] - g.xl[3]);
-        const double s1v = 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]);
-        const double frame_spin = s1v / s1x;
-        const double phi = (0.5 * (a10 - a01) - frame_spin) * dt;
-        if (phi != 0.0) {
-          // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
-          const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-          const double c = (1.0 - half_sq) * inv, sn = phi * inv;
-          const std::size_t q0 = static_cast<std::size_t>(nip) * e;
-          for (int k = 0; k < nip; ++k) {
-            const std::size_t q = q0 + static_cast<std::size_t>(k);
-            const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
-            st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
-            st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
-            st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
-            const double tzx = st.s[4][q], tyz = st.s[3][q];
-            st.s[4][q] = c * tzx - sn * tyz;
-            st.s[3][q] = sn * tzx + c * tyz;
-          }
+      }
+      g.area = area;
+      const double phi = RATE[8][k_el];
+      if (phi != 0.0) {
+        // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
+        const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
+        const double c = (1.0 - half_sq) * inv, sn = phi * inv;
+        const std::size_t q0 = unip * e;
+        for (int k = 0; k < nip; ++k) {
+          const std::size_t q = q0 + static_cast<std::size_t>(k);
+          const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
+          st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
+          st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
+          st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
+          const double tzx = st.s[4][q], tyz = st.s[3][q];
+          st.s[4][q] = c * tzx - sn * tyz;
+          st.s[3][q] = sn * tzx + c * tyz;
         }
       }
       // Strain increments at the thickness points (tensor shears; the shear factor scales the
@@ -235,12 +312,16 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       for (int k = 0; k < nip; ++k) {
         const double z = 0.5 * t * zeta[k];
         const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
-        pdxx[at] = (dxx + z * kx) * dt;
-        pdyy[at] = (dyy + z * ky) * dt;
-        pdxy[at] = 0.5 * (gxy + z * kxy) * dt;
-        pdyz[at] = 0.5 * kappa * gyz * dt;
-        pdzx[at] = 0.5 * kappa * gxz * dt;
+        pdxx[at] = (RATE[0][k_el] + z * RATE[3][k_el]) * dt;
+        pdyy[at] = (RATE[1][k_el] + z * RATE[4][k_el]) * dt;
+        pdxy[at] = 0.5 * (RATE[2][k_el] + z * RATE[5][k_el]) * dt;
+        pdyz[at] = 0.5 * kappa * RATE[7][k_el] * dt;
+        pdzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
       }
+      const double x[4][3] = {{LX[0][k_el], LY[0][k_el], LZ[0][k_el]},
+                              {LX[1][k_el], LY[1][k_el], LZ[1][k_el]},
+                              {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
+                              {LX[3][k_el], LY[3][k_el], LZ[3][k_el]}};
       if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
         // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
         // both projected on the shell.

@@ -16,7 +16,7 @@ std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
   constexpr std::size_t kChunk = 4096;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::array<double, N>> partial(chunks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) proc_bind(close)
   for (long c = 0; c < static_cast<long>(chunks); ++c) {
     const std::size_t b = static_cast<std::size_t>(c) * kChunk;
     const std::size_t e = b + kChunk < n ? b + kChunk : n;

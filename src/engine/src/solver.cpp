@@ -111,7 +111,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   // Packed copy of x, y, z, vx, vy, vz per node for the element gathers (one cache line).
   std::vector<double> packed(6 * n);
   const auto pack = [&] {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) proc_bind(close)
     for (long li = 0; li < static_cast<long>(n); ++li) {
       const auto i = static_cast<std::size_t>(li);
       double* p = &packed[6 * i];
@@ -206,7 +206,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   double bad_velocities = 0.0;
   std::vector<std::array<double, 3>> free_velocity(bc.constrained_nodes().size());
   const auto internal = [&](double dt) {
-#pragma omp parallel
+#pragma omp parallel proc_bind(close)
     {
       for (std::size_t p = 0; p < phases.size(); ++p) {
         const std::vector<WorkItem>& phase = phases[p];
@@ -321,7 +321,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   // x = x0 + u and velocities at t_{n+1}. The hot passes then touch fewer arrays (each extra
   // stream costs, and many same-offset streams collide in the caches).
   const auto sync = [&] {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) proc_bind(close)
     for (long li = 0; li < static_cast<long>(n); ++li) {
       const auto i = static_cast<std::size_t>(li);
       s.x[i] = model.x0[i] + s.ux[i];
@@ -332,7 +332,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w_full;
     }
     if (rotations) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) proc_bind(close)
       for (long li = 0; li < static_cast<long>(n); ++li) {
         const auto i = static_cast<std::size_t>(li);
         s.wnx[i] = old_wx[i] + (s.wx[i] - old_wx[i]) * w_full;
@@ -582,7 +582,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     work_internal += pending_internal;
     work_external += pending_external;
     // Positions at t_{n+1} and the packed copy the elements gather from.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) proc_bind(close)
     for (long li = 0; li < static_cast<long>(n); ++li) {
       const auto i = static_cast<std::size_t>(li);
       const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
