@@ -13,7 +13,7 @@ namespace plyform::engine {
 /// nodes both advance them and accumulate energies.
 template <std::size_t N, class F>
 std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
-  constexpr std::size_t kChunk = 4096;
+  constexpr std::size_t kChunk = 1024;  // many chunks: balanced threads on small models too
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::array<double, N>> partial(chunks);
 #pragma omp parallel for schedule(static) proc_bind(close)

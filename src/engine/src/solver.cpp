@@ -29,7 +29,7 @@ struct WorkItem {
 template <class Block>
 void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,
                 std::vector<std::vector<WorkItem>>& phases) {
-  constexpr std::size_t kItem = 256;
+  constexpr std::size_t kItem = 64;  // small enough to balance two threads on a colour
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     // Rigid parts move with their body: no internal forces, no stable step.
     if (std::holds_alternative<core::RigidMaterial>(
