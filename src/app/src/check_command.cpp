@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/law/user_constants.hpp"
@@ -54,6 +55,16 @@ void print_law(const model::ModelDesc& model, const model::UserInterfaceFriction
   }
 }
 
+const char* material_name(const core::Material& m) {
+  static constexpr const char* kNames[] = {"*MAT_ELASTIC",
+                                           "*MAT_MOONEY-RIVLIN_RUBBER",
+                                           "*MAT_PIECEWISE_LINEAR_PLASTICITY",
+                                           "*MAT_POWER_LAW_PLASTICITY",
+                                           "*MAT_ORTHOTROPIC_ELASTIC",
+                                           "*MAT_RIGID"};
+  return kNames[m.index()];
+}
+
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
 // runtime model cannot be built.
 bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& err) {
@@ -74,6 +85,15 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
   }
   fmt::print(out, "nodes: {}\n", m.node_count());
   fmt::print(out, "solid elements: {} (ELFORM 1: {}, ELFORM 2: {})\n", one + two, one, two);
+  std::size_t shells = 0, triangles = 0;
+  for (const auto& b : m.shell_blocks) {
+    shells += b.size();
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      if (b.connectivity[4 * e + 2] == b.connectivity[4 * e + 3])
+        ++triangles;
+    }
+  }
+  fmt::print(out, "shell elements: {} (Belytschko-Tsay; {} triangles)\n", shells, triangles);
   fmt::print(out, "parts: {}\n", m.parts.size());
   double dt_min = 1e300;
   core::GlobalId dt_element = 0;
@@ -81,15 +101,30 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
                                 m.z0.data(), m.x0.data(), m.y0.data(), m.z0.data()};
   for (const auto& b : m.solid_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
-    const char* law = std::holds_alternative<core::ElasticMaterial>(mat)
-                          ? "*MAT_ELASTIC"
-                          : "*MAT_MOONEY-RIVLIN_RUBBER";
+    const char* law = material_name(mat);
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
     fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}\n",
                part.id, part.title, b.size(), static_cast<int>(b.formulation), law, b.hourglass.ihq,
                b.hourglass.qm);
+    if (std::holds_alternative<core::RigidMaterial>(mat))
+      continue;  // moves as a body
     for (std::size_t e = 0; e < b.size(); ++e) {
       const double dt = element::solid_stable_dt(b, mat, view, e);
+      if (dt < dt_min) {
+        dt_min = dt;
+        dt_element = b.element_id[e];
+      }
+    }
+  }
+  for (const auto& b : m.shell_blocks) {
+    const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
+    const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
+    fmt::print(out, "  part {} '{}': {} shells, NIP {}, {}\n", part.id, part.title, b.size(), b.nip,
+               material_name(mat));
+    if (std::holds_alternative<core::RigidMaterial>(mat))
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const double dt = element::shell_stable_dt(b, mat, view, e);
       if (dt < dt_min) {
         dt_min = dt;
         dt_element = b.element_id[e];
@@ -102,7 +137,7 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
   if (dt_min < 1e300) {
     const double dt = m.controls.tssfac * dt_min;
     fmt::print(out,
-               "stable time step estimate: {:.6g} (TSSFAC {:g}, set by solid element {}), about "
+               "stable time step estimate: {:.6g} (TSSFAC {:g}, set by element {}), about "
                "{:.3g} cycles\n",
                dt, m.controls.tssfac, dt_element, m.controls.end_time / dt);
   }
