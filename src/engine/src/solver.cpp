@@ -344,6 +344,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   // The trapezoidal work of the step to come, first half: known once v_{n+3/2} is.
   double pending_internal = 0.0, pending_external = 0.0;
+  std::array<double, 2> rotation_sums{};  // moments' work sums of the last velocity pass
 
   // Velocity update v_{n+3/2} = v_{n+1/2} + a_{n+1} dt_avg in one pass over the nodes, which
   // also sums the work of the forces at t_{n+1} over the step just taken (dt_prev, second half
@@ -366,7 +367,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       saved_f[3 * k + 1] = s.fy[i];
       saved_f[3 * k + 2] = s.fz[i];
     }
-    const auto sums = deterministic_sums<5>(n, [&](std::size_t i, std::array<double, 5>& acc) {
+    const auto sums = deterministic_sums<7>(n, [&](std::size_t i, std::array<double, 7>& acc) {
       const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
       const double fx = s.fx[i], fy = s.fy[i], fz = s.fz[i];
       const double ex = s.ex[i], ey = s.ey[i], ez = s.ez[i];
@@ -385,8 +386,26 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       s.vy[i] = ny;
       s.vz[i] = nz;
       s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
+      if (rotations) {
+        // Rotations in the same pass (one pass over the nodes, one barrier less):
+        // w_{n+3/2} = w_{n+1/2} - I^-1 m dt_avg and the moments' work, as for the forces.
+        const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
+        const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
+        const double hr = inv_inertia[i] * dt_avg;
+        const double rx = wx - mx * hr, ry = wy - my * hr, rz = wz - mz * hr;
+        acc[5] += wx * mx + wy * my + wz * mz;
+        acc[6] += rx * mx + ry * my + rz * mz;
+        old_wx[i] = wx;
+        old_wy[i] = wy;
+        old_wz[i] = wz;
+        s.wx[i] = rx;
+        s.wy[i] = ry;
+        s.wz[i] = rz;
+        s.mx[i] = s.my[i] = s.mz[i] = 0.0;
+      }
     });
     bad_velocities = sums[4];
+    rotation_sums = {sums[5], sums[6]};
     // Free velocities of the constrained nodes, before the constraints overwrite them.
     std::vector<std::array<double, 3>>& free_v = free_velocity;
     for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
@@ -455,10 +474,10 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     pending_external = 0.5 * dt_next * (sums[3] + next_ext);
     return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[2] + prev_ext)};
   };
-  // Rotations (shell nodes): w_{n+3/2} = w_{n+1/2} - I^-1 m dt_avg over the nodes with rotary
-  // inertia, fixed rotations zeroed, and the work of the moments by the trapezoid, as for
-  // the forces. Returns the internal work of the step just taken; the next step's first half
-  // goes to pending_internal.
+  // Rotations (shell nodes): the velocity pass integrates them (w_{n+3/2} = w_{n+1/2} -
+  // I^-1 m dt_avg) and sums the moments' work; here fixed rotations are zeroed and the work
+  // booked: the step just taken is returned, the next step's first half goes to
+  // pending_internal.
   std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
   for (const core::FixedDofs& f : model.fixed) {
     if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
@@ -467,21 +486,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const auto advance_rotation = [&](double dt_prev, double dt_next, double dt_avg) {
     if (!rotations)
       return 0.0;
-    const auto sums = deterministic_sums<2>(n, [&](std::size_t i, std::array<double, 2>& acc) {
-      const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
-      const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
-      const double h = inv_inertia[i] * dt_avg;
-      const double nx = wx - mx * h, ny = wy - my * h, nz = wz - mz * h;
-      acc[0] += wx * mx + wy * my + wz * mz;
-      acc[1] += nx * mx + ny * my + nz * mz;
-      old_wx[i] = wx;
-      old_wy[i] = wy;
-      old_wz[i] = wz;
-      s.wx[i] = nx;
-      s.wy[i] = ny;
-      s.wz[i] = nz;
-      s.mx[i] = s.my[i] = s.mz[i] = 0.0;
-    });
+    const std::array<double, 2> sums = rotation_sums;  // summed in the velocity pass
     // Fixed rotations: their velocity is zero, and so is the work of their reaction moments;
     // remove the free part of the next half's sum at those nodes (their moment is gone, so the
     // correction is exact only with the moment: recomputed from the change of w).
