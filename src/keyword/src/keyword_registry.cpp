@@ -50,6 +50,7 @@ KeywordSpec control_termination_keyword();
 KeywordSpec control_timestep_keyword();
 KeywordSpec control_energy_keyword();
 KeywordSpec control_hourglass_keyword();
+KeywordSpec control_shell_keyword();
 KeywordSpec control_units_keyword();
 KeywordSpec database_binary_d3plot_keyword();
 KeywordSpec database_glstat_keyword();
@@ -101,6 +102,7 @@ std::span<const KeywordSpec> keyword_registry() {
       control_timestep_keyword(),
       control_energy_keyword(),
       control_hourglass_keyword(),
+      control_shell_keyword(),
       control_units_keyword(),
       database_binary_d3plot_keyword(),
       database_glstat_keyword(),

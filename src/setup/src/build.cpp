@@ -239,6 +239,14 @@ struct Builder {
         b.nip = sec.nip;
         b.shear_factor = sec.shear_factor;
         b.hourglass = hourglass_of(p, 3, "shells");
+        if (d.control_shell && d.control_shell->intgrd == 1) {
+          if (sec.nip < 2) {
+            error(sec.where, "*SECTION_SHELL", "NIP",
+                  "Lobatto integration (*CONTROL_SHELL INTGRD = 1) needs NIP >= 2");
+            continue;
+          }
+          b.rule = core::ThicknessRule::lobatto;
+        }
         shell_block_of_part.emplace(p.id, m.shell_blocks.size());
         m.shell_blocks.push_back(std::move(b));
       }

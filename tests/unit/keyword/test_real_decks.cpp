@@ -141,9 +141,13 @@ TEST_F(RealDecks, MetalformingDeckReadsShellsMaterialsAndRigidTools) {
   EXPECT_EQ(result.model.rigid_motions[0].part_id, 2);
   EXPECT_EQ(result.model.rigid_motions[0].dof, 6);
   EXPECT_DOUBLE_EQ(result.model.rigid_motions[0].scale, -1.0);
+  // What is left: keywords outside the subset, and *CONTROL_SHELL's ESORT = 1 (sorting
+  // triangles to a C0 triangle), which plyform names rather than ignores.
   EXPECT_EQ(result.errors.size(), 16u);
   for (const Diagnostic& error : result.errors) {
-    EXPECT_NE(error.message.find("unsupported keyword"), std::string::npos) << error.to_string();
+    const bool unsupported_keyword = error.message.find("unsupported keyword") != std::string::npos;
+    const bool esort = error.keyword == "*CONTROL_SHELL" && error.field == "ESORT";
+    EXPECT_TRUE(unsupported_keyword || esort) << error.to_string();
   }
 }
 

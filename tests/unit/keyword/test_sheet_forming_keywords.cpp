@@ -432,3 +432,28 @@ TEST(LoadRigidBody, ForcesAndMoments) {
 
 }  // namespace
 }  // namespace plyform::keyword
+
+namespace plyform::keyword {
+namespace {
+
+TEST(ControlShell, ReadsLobattoAndRejectsWhatIsNotImplemented) {
+  const auto ok = read_deck_text(
+      "*KEYWORD\n*CONTROL_SHELL\n      20.0         0        -1         1         2         2"
+      "         1         0\n       1.0         1         0         1         0\n*END\n",
+      "shell.k");
+  ASSERT_TRUE(ok.ok()) << ok.errors.front().to_string();
+  ASSERT_TRUE(ok.model.control_shell.has_value());
+  EXPECT_EQ(ok.model.control_shell->intgrd, 1);
+  EXPECT_EQ(ok.model.control_shell->istupd, 1);
+  const auto bad = read_deck_text(
+      "*KEYWORD\n*CONTROL_SHELL\n      20.0         0        -1         1         2         1\n"
+      "*END\n",
+      "shell.k");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.errors.front().where.line, 3);
+  EXPECT_EQ(bad.errors.front().keyword, "*CONTROL_SHELL");
+  EXPECT_EQ(bad.errors.front().field, "BWC");
+}
+
+}  // namespace
+}  // namespace plyform::keyword

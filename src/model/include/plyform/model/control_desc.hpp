@@ -47,6 +47,15 @@ struct ControlHourglassDesc {
   SourceLocation where;
 };
 
+/// *CONTROL_SHELL: the shell controls plyform implements (the others must keep their
+/// defaults; the reader rejects anything else).
+struct ControlShellDesc {
+  int istupd = 0;  ///< ISTUPD: thickness update (plyform always updates; 0 is warned about)
+  int theory = 2;  ///< THEORY: default shell formulation (2, Belytschko-Tsay)
+  int intgrd = 0;  ///< INTGRD: through-thickness rule, 0 Gauss, 1 Lobatto
+  SourceLocation where;
+};
+
 /// *CONTROL_UNITS: names of the deck's units, kept as text (no conversion).
 struct ControlUnitsDesc {
   std::string length;  ///< LENGTH ("m", "mm", ...)

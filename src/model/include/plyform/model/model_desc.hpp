@@ -68,6 +68,7 @@ struct ModelDesc {
   std::optional<ControlTimestepDesc> timestep;
   std::optional<ControlEnergyDesc> energy;
   std::optional<ControlHourglassDesc> control_hourglass;
+  std::optional<ControlShellDesc> control_shell;
   std::optional<ControlUnitsDesc> units;
   std::optional<DatabaseBinaryD3plotDesc> d3plot;
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, *DATABASE_NODOUT
