@@ -7,17 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "plyform/engine/solver.hpp"
+#include "engine_timing.hpp"
 
 namespace {
 
 using namespace plyform;
-
-struct NullSink : engine::OutputSink {
-  void state(const engine::Snapshot&) override {}
-  void glstat(const engine::Energies&) override {}
-  void nodout(const engine::Snapshot&) override {}
-};
 
 core::Model plate(int nx) {
   core::Model m;
@@ -65,27 +59,13 @@ core::Model plate(int nx) {
   return m;
 }
 
-double measure(const core::Model& m, long cycles, int threads) {
-  core::Model run = m;
-  run.controls.end_cycle = cycles;
-  NullSink sink;
-  engine::SolverOptions o;
-  o.threads = threads;
-  const engine::RunResult r = engine::run(run, sink, o);
-  if (!r.ok) {
-    std::fprintf(stderr, "run failed: %s\n", r.error.c_str());
-    std::exit(1);
-  }
-  return r.element_cycles_per_second;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   const long cycles = argc > 1 ? std::atol(argv[1]) : 500;
   const core::Model m = plate(100);
-  const double one = measure(m, cycles, 1);
-  const double two = measure(m, cycles, 2);
+  const double one = bench::element_cycles_per_second(m, cycles, 1);
+  const double two = bench::element_cycles_per_second(m, cycles, 2);
   std::printf(
       "Belytschko-Tsay, 100 x 100 shells, NIP 5, J2 (*MAT_024), %ld cycles: 1 thread "
       "%.2f M element-cycles/s, 2 threads %.2f M (speed-up %.2f)\n",
