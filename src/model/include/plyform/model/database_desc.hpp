@@ -19,7 +19,7 @@ struct DatabaseBinaryD3plotDesc {
 
 /// *DATABASE_GLSTAT / *DATABASE_NODOUT: an ASCII history file's interval.
 struct DatabaseAsciiDesc {
-  std::string name;  ///< "GLSTAT" or "NODOUT"
+  std::string name;  ///< "GLSTAT", "NODOUT" or "RCFORC"
   double dt = 0.0;   ///< DT: interval, time units
   int binary = 0;    ///< BINARY: 0/1 ASCII, 2 binout, 3 both; plyform writes CSV always
   int lcur = 0;      ///< LCUR: must be 0 (an interval curve is not supported yet)

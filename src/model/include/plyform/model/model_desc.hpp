@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "plyform/model/boundary_desc.hpp"
+#include "plyform/model/contact_desc.hpp"
 #include "plyform/model/control_desc.hpp"
 #include "plyform/model/curve_desc.hpp"
 #include "plyform/model/database_desc.hpp"
@@ -24,6 +25,7 @@
 #include "plyform/model/section_shell_desc.hpp"
 #include "plyform/model/section_solid_desc.hpp"
 #include "plyform/model/set_desc.hpp"
+#include "plyform/model/temperature_desc.hpp"
 #include "plyform/model/user_interface_friction_desc.hpp"
 
 namespace plyform::model {
@@ -54,6 +56,11 @@ struct ModelDesc {
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;
   std::vector<SetListDesc> part_sets;
+  std::vector<SetSegmentDesc> segment_sets;
+
+  // Contact
+  std::vector<ContactDesc> contacts;
+  std::optional<ControlContactDesc> control_contact;
 
   // Loads, constraints, initial conditions
   std::vector<BoundarySpcDesc> spcs;
@@ -62,6 +69,8 @@ struct ModelDesc {
   std::vector<LoadNodeDesc> nodal_loads;
   std::vector<LoadRigidBodyDesc> rigid_body_loads;
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
+  std::vector<InitialTemperatureDesc> initial_temperatures;
+  std::vector<BoundaryTemperatureDesc> temperature_histories;
 
   // Control and output
   std::optional<ControlTerminationDesc> termination;
@@ -71,7 +80,7 @@ struct ModelDesc {
   std::optional<ControlShellDesc> control_shell;
   std::optional<ControlUnitsDesc> units;
   std::optional<DatabaseBinaryD3plotDesc> d3plot;
-  std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, *DATABASE_NODOUT
+  std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
   std::vector<DatabaseHistoryNodeDesc> history_nodes;
 
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "plyform/model/source_location.hpp"
+
+namespace plyform::model {
+
+/// The *CONTACT_ keywords plyform reads (all with the _ID option).
+enum class ContactKind {
+  one_way_surface_to_surface,          ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
+  surface_to_surface,                  ///< *CONTACT_SURFACE_TO_SURFACE (two-way)
+  forming_one_way_surface_to_surface,  ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
+  automatic_surface_to_surface,        ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (two-way)
+};
+
+/// What SSID / MSID name (LS-DYNA's SSTYP / MSTYP codes).
+enum class ContactSideType : int {
+  segment_set = 0,  ///< *SET_SEGMENT
+  part_set = 2,     ///< *SET_PART_LIST
+  part = 3,         ///< one *PART
+  node_set = 4,     ///< *SET_NODE_LIST (slave side only)
+};
+
+/// One *CONTACT_..._SURFACE_TO_SURFACE (_ID) keyword: cards 1-3 and optional card A.
+struct ContactDesc {
+  ContactKind kind = ContactKind::one_way_surface_to_surface;
+  std::string keyword;  ///< the keyword as written (upper case), for messages
+  int id = 0;           ///< CID of the _ID option (0 without it)
+  std::string heading;  ///< HEADING of the _ID option
+  // Card 1
+  int ssid = 0;  ///< SSID: slave side (set or part id)
+  int msid = 0;  ///< MSID: master side
+  ContactSideType sstyp = ContactSideType::segment_set;
+  ContactSideType mstyp = ContactSideType::segment_set;
+  int spr = 0;  ///< SPR: slave side in the interface force file (kept as written)
+  int mpr = 0;  ///< MPR
+  // Card 2
+  double fs = 0.0;      ///< FS: static friction coefficient
+  double fd = 0.0;      ///< FD: dynamic friction coefficient
+  double dc = 0.0;      ///< DC: exponential decay coefficient [time/length]
+  double vc = 0.0;      ///< VC: viscous friction limit [stress] (0: none)
+  double vdc = 0.0;     ///< VDC: normal viscous damping, percent of critical
+  double birth = 0.0;   ///< BT: birth time
+  double death = 1e20;  ///< DT: death time (a written 0 is 1e20, as LS-DYNA)
+  // Card 3
+  double sfs = 1.0;   ///< SFS: slave penalty scale factor
+  double sfm = 1.0;   ///< SFM: master penalty scale factor
+  double sst = 0.0;   ///< SST: slave contact thickness (0: the shell thickness)
+  double mst = 0.0;   ///< MST: master contact thickness (0: the shell thickness)
+  double sfst = 1.0;  ///< SFST: scale factor of the slave thickness
+  double sfmt = 1.0;  ///< SFMT: scale factor of the master thickness
+  double fsf = 1.0;   ///< FSF: friction coefficient scale factor
+  double vsf = 1.0;   ///< VSF: viscous friction scale factor
+  // Optional card A
+  int soft = 0;           ///< SOFT: 0 penalty from the material, 1 from masses and time step
+  double sofscl = 0.1;    ///< SOFSCL: scale factor of the SOFT = 1 stiffness
+  double maxpar = 1.025;  ///< MAXPAR: parametric extension of a segment for the projection
+  int bsort = 0;          ///< BSORT: cycles between bucket sorts (0: automatic)
+  SourceLocation where;   ///< the keyword line
+  SourceLocation card1;   ///< the line of card 1 (SSID ...)
+};
+
+/// *SET_SEGMENT (_TITLE): quadrilaterals (N3 = N4 for a triangle) given by node ids.
+struct SetSegmentDesc {
+  int id = 0;                                ///< SID
+  std::string title;                         ///< from the _TITLE option
+  std::vector<std::array<int, 4>> segments;  ///< N1..N4 of each segment
+  std::vector<SourceLocation> segments_where;
+  SourceLocation where;  ///< the line of card 1 (SID ...)
+};
+
+/// *CONTROL_CONTACT: the fields plyform implements; the reader rejects others not at their
+/// defaults.
+struct ControlContactDesc {
+  double slsfac = 0.1;  ///< SLSFAC: penalty scale factor of every contact (a written 0 is 0.1)
+  int shlthk = 0;       ///< SHLTHK: shell thickness in non-automatic contacts (see docs)
+  int penopt = 1;       ///< PENOPT: 1 min(slave, master), 2 master, 3 slave stiffness
+  int nsbcs = 0;        ///< NSBCS: cycles between bucket sorts (0: automatic)
+  double sfric = 0.0;   ///< SFRIC: default static friction (contacts with FS = 0)
+  double dfric = 0.0;   ///< DFRIC: default dynamic friction
+  double edc = 0.0;     ///< EDC: default decay coefficient
+  double vfc = 0.0;     ///< VFC: default viscous friction limit
+  SourceLocation where;
+};
+
+}  // namespace plyform::model
