@@ -24,6 +24,17 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
                     std::vector<std::string>{"time", "part", "fx", "fy", "fz", "mx", "my", "mz",
                                              "x", "y", "z", "vx", "vy", "vz"});
   }
+  if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
+    rcforc_.emplace(outdir / output::rcforc_file_name);
+    interface_energy_.emplace(
+        outdir / "interface_energy.csv",
+        std::vector<std::string>{"time", "interface", "work", "stored", "damage", "viscous",
+                                 "friction", "damping", "healing", "in_contact", "bonded"});
+  }
+  for (const core::ContactInterface& c : model.contacts)
+    cohesive_model_ = cohesive_model_ || c.cohesive;
+  if (cohesive_model_ && model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty())
+    cohesive_.emplace(outdir / output::cohesive_file_name);
   node_ids_.assign(model.node_id.begin(), model.node_id.end());
   for (const core::SolidBlock& b : model.solid_blocks) {
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -52,7 +63,7 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
   const std::size_t n = model.node_count(), cells = element_ids_.size();
   displacement_.resize(3 * n);
   velocity_.resize(3 * n);
-  // No thermal field yet: NaN says "not defined" rather than a made-up temperature.
+  // Without temperatures in the deck, NaN says "not defined" rather than a made-up value.
   temperature_.assign(n, std::numeric_limits<double>::quiet_NaN());
   stress_.resize(6 * cells);
   stress_top_.resize(6 * cells);
@@ -130,6 +141,24 @@ void ResultWriter::state(const engine::Snapshot& s) {
       thickness_[cell] = st.thickness[e];
     }
   }
+  if (!model_.temperature0.empty())
+    std::copy(ns.temperature.begin(), ns.temperature.end(), temperature_.begin());
+  if (cohesive_model_ && s.contact != nullptr) {
+    // Nodes that are no slave node of a cohesive interface: NaN (nothing defined there).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    beta_.assign(n, nan);
+    contact_pressure_.assign(n, nan);
+    gap_.assign(n, nan);
+    contact_state_.assign(n, nan);
+    s.contact->cohesive_results(slave_results_);
+    for (const contact::SlaveNodeResult& r : slave_results_) {
+      const auto i = static_cast<std::size_t>(r.node);
+      beta_[i] = r.beta;
+      contact_pressure_[i] = r.pressure;
+      gap_[i] = r.gap;
+      contact_state_[i] = static_cast<double>(r.state);
+    }
+  }
   output::GridPiece piece;
   piece.x = ns.x;
   piece.y = ns.y;
@@ -140,6 +169,12 @@ void ResultWriter::state(const engine::Snapshot& s) {
   piece.point_data = {{"displacement", 3, displacement_},
                       {"velocity", 3, velocity_},
                       {"temperature", 1, temperature_}};
+  if (cohesive_model_ && s.contact != nullptr) {
+    piece.point_data.push_back({"beta", 1, beta_});
+    piece.point_data.push_back({"contact_pressure", 1, contact_pressure_});
+    piece.point_data.push_back({"gap", 1, gap_});
+    piece.point_data.push_back({"contact_state", 1, contact_state_});
+  }
   piece.cell_data = {{"stress", 6, stress_},
                      {"stress_top", 6, stress_top_},
                      {"stress_bottom", 6, stress_bottom_},
@@ -158,6 +193,21 @@ void ResultWriter::rigid_bodies(double time, const rigid::RigidBodies& bodies) {
                   b.moment[0], b.moment[1], b.moment[2], b.centre[0], b.centre[1], b.centre[2],
                   b.velocity[0], b.velocity[1], b.velocity[2]});
   }
+}
+
+void ResultWriter::contact_forces(double time,
+                                  const std::vector<contact::InterfaceReport>& interfaces) {
+  if (!rcforc_)
+    return;
+  rcforc_rows_.clear();
+  for (const contact::InterfaceReport& r : interfaces) {
+    rcforc_rows_.push_back({time, r.id, r.force[0], r.force[1], r.force[2]});
+    interface_energy_->row_mixed({time, static_cast<std::int64_t>(r.id), r.work, r.stored, r.damage,
+                                  r.viscous, r.friction, r.damping, r.healing,
+                                  static_cast<std::int64_t>(r.in_contact),
+                                  static_cast<std::int64_t>(r.bonded)});
+  }
+  rcforc_->write(rcforc_rows_);
 }
 
 void ResultWriter::glstat(const engine::Energies& e) {
@@ -179,6 +229,21 @@ void ResultWriter::nodout(const engine::Snapshot& s) {
                                       ns.vnz[i]});
   }
   nodout_->write(rows_);
+  if (!cohesive_ || s.contact == nullptr)
+    return;
+  // History nodes that are slave nodes of a cohesive interface.
+  s.contact->cohesive_results(slave_results_);
+  std::vector<char> wanted(model_.node_count(), 0);
+  for (core::Index idx : model_.output.history_nodes)
+    wanted[static_cast<std::size_t>(idx)] = 1;
+  cohesive_rows_.clear();
+  for (const contact::SlaveNodeResult& r : slave_results_) {
+    if (!wanted[static_cast<std::size_t>(r.node)])
+      continue;
+    cohesive_rows_.push_back({s.time, r.interface, model_.node_id[static_cast<std::size_t>(r.node)],
+                              law::to_string(r.state), r.gap, r.pressure, r.tau, r.beta});
+  }
+  cohesive_->write(cohesive_rows_);
 }
 
 void ResultWriter::progress(double time, double end_time, long cycle, double dt, double wall) {

@@ -1,6 +1,8 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
-// glstat.csv, nodout.csv, rbdout.csv (rigid bodies) and the progress line, in OUTDIR.
+// glstat.csv, nodout.csv, rbdout.csv (rigid bodies), rcforc.csv and interface_energy.csv
+// (contacts), cohesive.csv (history nodes of cohesive interfaces) and the progress line, in
+// OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -25,6 +27,8 @@ class ResultWriter : public engine::OutputSink {
   void nodout(const engine::Snapshot& s) override;
   void progress(double time, double end_time, long cycle, double dt, double wall) override;
   void rigid_bodies(double time, const rigid::RigidBodies& bodies) override;
+  void contact_forces(double time,
+                      const std::vector<contact::InterfaceReport>& interfaces) override;
   void finish();
 
   [[nodiscard]] std::size_t states_written() const { return series_.states_written(); }
@@ -35,14 +39,21 @@ class ResultWriter : public engine::OutputSink {
   std::optional<output::GlstatFile> glstat_;
   std::optional<output::NodoutFile> nodout_;
   std::optional<output::CsvHistory> rbdout_;
+  std::optional<output::RcforcFile> rcforc_;
+  std::optional<output::CsvHistory> interface_energy_;
+  std::optional<output::CohesiveFile> cohesive_;
+  bool cohesive_model_ = false;  // a cohesive interface: its arrays go into the VTU states
+  std::vector<contact::SlaveNodeResult> slave_results_;
   output::ProgressLine progress_;
   // The parts of every state that do not change: cells and ids.
   std::vector<std::int64_t> connectivity_, offsets_, node_ids_, element_ids_, part_ids_;
   std::vector<std::uint8_t> cell_types_;
   // Per-state buffers, reused.
   std::vector<double> displacement_, velocity_, temperature_, stress_, stress_top_, stress_bottom_,
-      plastic_strain_, thickness_;
+      plastic_strain_, thickness_, beta_, contact_pressure_, gap_, contact_state_;
   std::vector<output::NodoutRow> rows_;
+  std::vector<output::RcforcRow> rcforc_rows_;
+  std::vector<output::CohesiveRow> cohesive_rows_;
 };
 
 }  // namespace plyform::app

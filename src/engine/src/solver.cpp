@@ -103,6 +103,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     s.vy = model.v0y;
     s.vz = model.v0z;
   }
+  if (!model.temperature0.empty())
+    s.temperature = model.temperature0;
   if (!model.w0x.empty()) {
     s.wx = model.w0x;
     s.wy = model.w0y;
@@ -260,9 +262,17 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   double t = 0.0;
   long cycle = 0;
-  const Snapshot snap{0.0, 0, &model, &s, &solids, &shells, &*rigid_bodies};
+  // Contact interfaces: built once the masses and the elements' first step are known (SOFT = 1
+  // stiffness, the contact's step vote).
+  std::optional<contact::ContactSet> contact;
+  const auto contact_forces = [&] {
+    if (contact)
+      sink.contact_forces(t, contact->report());
+  };
+  const Snapshot snap{0.0, 0, &model, &s, &solids, &shells, &*rigid_bodies, nullptr};
   const auto snapshot = [&] {
     Snapshot x = snap;
+    x.contact = contact ? &*contact : nullptr;
     x.time = t;
     x.cycle = cycle;
     return x;
@@ -294,6 +304,16 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     return fixed_step ? model.controls.dt_init : tssfac * x.dt_min;
   };
   double dt = stable_step(ir);
+  if (!model.contacts.empty()) {
+    contact.emplace(model, s.mass, has_rigid ? is_rigid.data() : nullptr, stable_step(ir), tssfac);
+    contact->start(packed.data());
+    for (const std::string& w : contact->warnings())
+      res.warnings.push_back(w);
+    dt = std::min(dt, contact->stable_step());
+  }
+  const auto step_vote = [&](const InternalResult& x) {
+    return contact ? std::min(stable_step(x), contact->stable_step()) : stable_step(x);
+  };
   if (model.controls.dt_init > 0.0)
     dt = std::min(dt, model.controls.dt_init);
   const double end_time = model.controls.end_time;
@@ -534,7 +554,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     en.dt = dt;
     en.kinetic = kinetic();
     en.hourglass = hourglass;
-    en.internal = work_internal - hourglass;
+    en.contact = contact ? contact->energy() : 0.0;
+    en.internal = work_internal - hourglass - en.contact;
     en.external_work = work_external;
     en.total = en.kinetic + en.internal + en.hourglass + en.contact;
     const double reference = kinetic0 + work_external;
@@ -544,7 +565,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   const core::OutputRequests& out = model.output;
   const double eps_t = 1e-9 * std::max(end_time, dt);
-  double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0;
+  double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
   bool state_written = false;
   const auto write_outputs = [&](bool last) {
     state_written = false;
@@ -575,6 +596,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       sink.nodout(snapshot());
       while (next_nodout <= t + eps_t)
         next_nodout += out.nodout_dt;
+    }
+    if (contact && out.rcforc_dt > 0.0 && (t + eps_t >= next_rcforc || last)) {
+      contact_forces();
+      while (next_rcforc <= t + eps_t)
+        next_rcforc += out.rcforc_dt;
     }
   };
   write_outputs(false);
@@ -615,12 +641,26 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     hourglass += ir.hourglass;
     bc.loads(t, s);
+    for (const core::TemperatureHistory& th : model.temperature_histories) {
+      if (t >= th.birth && t <= th.death) {
+        s.temperature[static_cast<std::size_t>(th.node)] =
+            th.curve >= 0 ? th.scale * model.curves[static_cast<std::size_t>(th.curve)](t)
+                          : th.scale;
+      }
+    }
+    if (contact) {
+      contact->apply(t, dt, packed.data(), s.temperature.data(), s.fx.data(), s.fy.data(),
+                     s.fz.data());
+    }
 
-    double dt_next = stable_step(ir);
+    double dt_next = step_vote(ir);
     if (dt_next < dt_floor) {
       sync();
+      const bool by_contact = contact && contact->stable_step() < stable_step(ir);
       fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
-           " at t = " + time_text(t) + ", set by " + element_name(ir.dt_item, ir.dt_element));
+           " at t = " + time_text(t) + ", set by " +
+           (by_contact ? std::string("the contact stiffness")
+                       : element_name(ir.dt_item, ir.dt_element)));
       break;
     }
     if (end_time > 0.0 && t + dt_next > end_time)
@@ -650,6 +690,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   }
   res.cycles = cycle;
   res.time = t;
+  res.contact_searches = contact ? contact->searches() : 0;
   res.wall_seconds = wall();
   res.last = energies();
   if (res.wall_seconds > 0.0) {

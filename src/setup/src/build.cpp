@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <variant>
 
+#include "build_contact.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 
@@ -421,6 +422,8 @@ struct Builder {
         m.output.glstat_dt = a.dt;
       if (a.name == "NODOUT")
         m.output.nodout_dt = a.dt;
+      if (a.name == "RCFORC")
+        m.output.rcforc_dt = a.dt;
     }
     for (const model::DatabaseHistoryNodeDesc& h : d.history_nodes) {
       for (int id : h.node_ids)
@@ -446,6 +449,9 @@ BuildResult build(const model::ModelDesc& desc) {
             "*ELEMENT_SOLID", "",
             "a node is shared by more solid elements than the element colouring supports (128)");
   }
+  // Contacts last: they read the final (coloured) element blocks.
+  build_contacts(desc, b.m, b.out.errors, b.out.warnings);
+  build_temperatures(desc, b.m, b.out.errors);
   if (b.out.errors.empty())
     b.out.model = std::move(b.m);
   return std::move(b.out);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "plyform/core/contact.hpp"
 #include "plyform/core/load_curve.hpp"
 #include "plyform/core/material.hpp"
 #include "plyform/core/types.hpp"
@@ -135,7 +136,8 @@ struct Controls {
 struct OutputRequests {
   double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
   double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
-  double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none)
+  double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
+  double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
 };
 
@@ -158,6 +160,11 @@ struct Model {
   std::vector<RigidLoad> rigid_loads;
   std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)
   std::vector<double> w0x, w0y, w0z;  ///< initial angular velocities of shell nodes (empty: none)
+  // Temperatures (the law reads the slave node's): *INITIAL_TEMPERATURE, *BOUNDARY_TEMPERATURE.
+  std::vector<double> temperature0;  ///< per node at t = 0 (empty: 0 everywhere)
+  std::vector<TemperatureHistory> temperature_histories;
+  // Contact interfaces, in deck order.
+  std::vector<ContactInterface> contacts;
   Controls controls;
   OutputRequests output;
 

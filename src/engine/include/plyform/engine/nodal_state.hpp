@@ -20,6 +20,7 @@ struct NodalState {
   std::vector<double> wnx, wny, wnz;  ///< angular velocities at t_n (output, kinetic energy)
   std::vector<double> mx, my, mz;     ///< internal moments at t_n
   std::vector<double> inertia;        ///< lumped rotary inertia (isotropic)
+  std::vector<double> temperature;    ///< nodal temperature at t_n (the contact law reads it)
 
   void resize(std::size_t n);
   [[nodiscard]] std::size_t size() const { return x.size(); }

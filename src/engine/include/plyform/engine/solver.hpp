@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "plyform/contact/contact_set.hpp"
 #include "plyform/core/model.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
@@ -21,7 +22,7 @@ struct Energies {
   double kinetic = 0.0;
   double internal = 0.0;  ///< stress work, without hourglass
   double hourglass = 0.0;
-  double contact = 0.0;
+  double contact = 0.0;        ///< energy taken by the contact interfaces (stored and dissipated)
   double external_work = 0.0;  ///< loads and reactions of constraints and prescribed motions
   double total = 0.0;          ///< kinetic + internal + hourglass + contact
   double ratio = 1.0;          ///< total / (initial total + external work)
@@ -35,7 +36,8 @@ struct Snapshot {
   const NodalState* nodes = nullptr;
   const std::vector<element::SolidBlockState>* solids = nullptr;
   const std::vector<element::ShellBlockState>* shells = nullptr;
-  const rigid::RigidBodies* rigid = nullptr;  ///< the rigid bodies (may be empty)
+  const rigid::RigidBodies* rigid = nullptr;     ///< the rigid bodies (may be empty)
+  const contact::ContactSet* contact = nullptr;  ///< the contact interfaces (null: none)
 };
 
 class OutputSink {
@@ -46,6 +48,10 @@ class OutputSink {
   virtual void nodout(const Snapshot& s) = 0;  ///< at the nodout interval
   /// At the glstat interval when the model has rigid bodies: their resultants and motion.
   virtual void rigid_bodies(double /*time*/, const rigid::RigidBodies& /*bodies*/) {}
+  /// At the rcforc interval when the model has contacts: each interface's resultant force on
+  /// its slave side and its energy books.
+  virtual void contact_forces(double /*time*/,
+                              const std::vector<contact::InterfaceReport>& /*interfaces*/) {}
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
@@ -70,6 +76,7 @@ struct RunResult {
   double physical_mass = 0.0;
   Energies last;
   std::vector<std::string> warnings;
+  long contact_searches = 0;  ///< full contact searches (bucket sorts) done
 };
 
 /// Runs the model to its termination time (or the first instability) and returns what

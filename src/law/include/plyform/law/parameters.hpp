@@ -49,6 +49,9 @@ struct Parameters {
   FrictionCoupling coupling = FrictionCoupling::additive;
   double decay_dc = 0.0;       ///< DC: mu = mu_s (r + (1 - r) exp(-DC |v|)) [time/length]
   double dynamic_ratio = 1.0;  ///< r = FD / FS of that decay [-]
+  /// Upper bound of the Coulomb traction (LS-DYNA's VC, a viscous friction limit) [stress];
+  /// 0: none. Set by the contact host, not a user constant.
+  double friction_limit = 0.0;
   /// Gap beyond which a bonded node is released (the host's capture distance) [length].
   double release_gap = std::numeric_limits<double>::infinity();
   std::vector<Curve> curves;  ///< tables referenced by TemperatureDependent::curve

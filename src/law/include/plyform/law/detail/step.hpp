@@ -216,7 +216,9 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
       tau0 = -kt * trial0;
       tau1 = -kt * trial1;
       const double tau_sq = tau0 * tau0 + tau1 * tau1;
-      const double limit = mu * p_elastic;
+      double limit = mu * p_elastic;
+      if (p.friction_limit > 0.0 && limit > p.friction_limit)
+        limit = p.friction_limit;
       if (tau_sq > limit * limit) {
         // Return to the Coulomb cone; the inelastic slip dissipates limit * |slip_p|.
         const double scale = limit / std::sqrt(tau_sq);

@@ -1,0 +1,94 @@
+#pragma once
+// The contact pass of the engine: every interface of the model, each a set of one-way passes
+// (slave nodes against master segments). Per cycle: track or search the nearest segment of
+// each slave node, measure the surface gap (after thickness offsets) and the tangential slip
+// in the segment's plane, run the interface law over all slave nodes at once (law::Law::
+// update_batch), and add the tractions to the slave node and, equal and opposite through the
+// segment's shape functions, to the master nodes. See docs/contact.md.
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "plyform/core/model.hpp"
+#include "plyform/law/node_state.hpp"
+
+namespace plyform::contact {
+
+/// Totals of one interface (deck id), at the time of the last pass.
+struct InterfaceReport {
+  core::GlobalId id = 0;
+  std::array<double, 3> force{};  ///< resultant contact force on the slave side, global axes
+  double work = 0.0;              ///< contact energy: work the contact forces took from the nodes
+  // The law's books, summed over the slave nodes (energy units).
+  double stored = 0.0;         ///< held now: penalty and cohesive springs, stick springs
+  double damage = 0.0;         ///< adhesion energy released by damage
+  double viscous = 0.0;        ///< viscous dissipation of the adhesion evolution
+  double friction = 0.0;       ///< friction dissipation
+  double damping = 0.0;        ///< normal damping dissipation
+  double healing = 0.0;        ///< adhesion energy restored by re-healing
+  std::size_t in_contact = 0;  ///< slave nodes in compressive contact
+  std::size_t bonded = 0;      ///< slave nodes separating with adhesion (beta > 0)
+};
+
+/// One slave node of a cohesive interface at the time of the last pass.
+struct SlaveNodeResult {
+  core::Index node = 0;
+  core::GlobalId interface = 0;
+  law::NodeState state = law::NodeState::approaching;
+  double gap = 0.0;       ///< surface gap [length] (NaN: no master segment in reach)
+  double pressure = 0.0;  ///< normal traction, positive in compression [stress]
+  double tau = 0.0;       ///< magnitude of the tangential traction [stress]
+  double beta = 0.0;      ///< adhesion intensity
+};
+
+struct PassRuntime;  // contact_set.cpp
+
+class ContactSet {
+ public:
+  /// `mass`: the lumped nodal masses; `rigid`: 1 at nodes of rigid bodies (may be null);
+  /// `dt0`: the elements' first stable step (SOFT = 1); `tssfac`: the step scale factor.
+  ContactSet(const core::Model& model, const std::vector<double>& mass, const unsigned char* rigid,
+             double dt0, double tssfac);
+  ~ContactSet();
+  ContactSet(const ContactSet&) = delete;
+  ContactSet& operator=(const ContactSet&) = delete;
+
+  [[nodiscard]] bool empty() const { return passes_.empty(); }
+
+  /// t = 0: the first search, then initially bonded nodes (BOND_TOL) bond. `packed`: x y z vx
+  /// vy vz per node.
+  void start(const double* packed);
+
+  /// One cycle: positions of t (and velocities of the step dt just taken) in `packed`, nodal
+  /// temperatures (null: 0). The contact forces are subtracted from the internal-force arrays
+  /// f (the engine's convention: a = (f_ext - f) / m).
+  void apply(double t, double dt, const double* packed, const double* temperature, double* fx,
+             double* fy, double* fz);
+
+  /// The contact's stable step vote (infinity when no slave node is near a segment).
+  [[nodiscard]] double stable_step() const;
+  /// Total contact energy (all interfaces): the glstat `contact` column.
+  [[nodiscard]] double energy() const;
+  [[nodiscard]] std::vector<InterfaceReport> report() const;
+  /// Slave nodes of the cohesive interfaces, pass by pass.
+  void cohesive_results(std::vector<SlaveNodeResult>& out) const;
+  [[nodiscard]] std::size_t slave_count() const;
+  /// Full searches done so far (all passes).
+  [[nodiscard]] long searches() const { return searches_; }
+  /// Things the user should know (initial penetrations, ...), set by start().
+  [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  const core::Model& model_;
+  const std::vector<double>& mass_;
+  const unsigned char* rigid_;
+  std::vector<std::unique_ptr<PassRuntime>> passes_;
+  std::vector<std::string> warnings_;
+  long searches_ = 0;
+  double tssfac_ = 0.9;
+};
+
+}  // namespace plyform::contact

@@ -1,0 +1,612 @@
+#include "plyform/contact/contact_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "plyform/contact/bucket_search.hpp"
+#include "plyform/contact/segment_projection.hpp"
+#include "plyform/law/law.hpp"
+
+namespace plyform::contact {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::size_t kStride = 6;  // packed node data: x y z vx vy vz
+
+// Sums of per-slave values in fixed chunks, then the chunks in order: the same bits for any
+// number of threads.
+template <class F>
+double chunked_sum(std::size_t n, F&& f) {
+  constexpr std::size_t kChunk = 1024;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<double> part(chunks, 0.0);
+#pragma omp parallel for schedule(static)
+  for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
+    const auto c = static_cast<std::size_t>(lc);
+    double s = 0.0;
+    for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
+      s += f(i);
+    part[c] = s;
+  }
+  double total = 0.0;
+  for (double v : part)
+    total += v;
+  return total;
+}
+
+// The largest sigma_max of a law over its temperature range (the cohesive capture distance).
+double largest_sigma_max(const law::Parameters& p) {
+  if (p.sigma_max.curve >= 0) {
+    const law::Curve& c = p.curves[static_cast<std::size_t>(p.sigma_max.curve)];
+    double m = 0.0;
+    for (double y : c.y())
+      m = std::max(m, y);
+    return m;
+  }
+  return std::max(p.sigma_max.lo, p.sigma_max.hi);
+}
+
+}  // namespace
+
+/// The runtime state of one pass: its law, the search, and the per-slave arrays.
+struct PassRuntime {
+  const core::ContactInterface* iface = nullptr;
+  const core::ContactPass* pass = nullptr;
+  law::Law law;
+  law::HistoryStore history;
+  law::BatchHistory hist;
+  BucketSearch grid;
+  std::vector<std::size_t> cand_start;
+  std::vector<core::Index> cand;
+  std::vector<double> seg_radius;
+  std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
+  std::vector<double> tracked_ref;         // their positions at the last search
+  double margin = 0.0;
+  double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
+  long cycles_since_search = 0;
+  bool searched = false;
+  double dt_vote = kInf;
+  // Per slave node.
+  std::vector<core::Index> seg, prev_seg;
+  std::vector<double> shape, prev_shape;  // 4 each
+  std::vector<double> frame;              // 9 each: normal (slave side), e1, e2
+  std::vector<signed char> side;
+  std::vector<double> gap, slip_x, slip_y, temperature, k_normal, k_tangent, area, m_eff;
+  std::vector<double> pressure, tau_x, tau_y, stored;
+  std::vector<double> force, prev_force;  // 3 each
+  std::vector<double> work_part;
+  double work = 0.0;
+  std::array<double, 3> resultant{};
+  double dt0 = 0.0;
+
+  explicit PassRuntime(const law::Parameters& p) : law(p) {}
+};
+
+ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass,
+                       const unsigned char* rigid, double dt0, double tssfac)
+    : model_(model), mass_(mass), rigid_(rigid) {
+  for (const core::ContactInterface& ci : model.contacts) {
+    // The search reaches the cohesive band: beyond 2 g_c / sqrt(BETA_MIN) a bonded node has
+    // lost all but a negligible part of its adhesion, and the law releases it there.
+    double capture = 0.0;
+    law::Parameters params = ci.law;
+    if (ci.cohesive) {
+      const double gc = largest_sigma_max(params) / params.cn;
+      capture = 2.0 * gc / std::sqrt(std::max(params.beta_min, 1e-12));
+      params.release_gap = std::min(params.release_gap, capture);
+    }
+    for (const core::ContactPass& cp : ci.passes) {
+      auto pr = std::make_unique<PassRuntime>(params);
+      pr->iface = &ci;
+      pr->pass = &cp;
+      pr->dt0 = dt0;
+      const std::size_t ns = cp.slave_count();
+      const std::size_t nseg = cp.segment_count();
+      pr->history = law::HistoryStore(ns);
+      pr->hist = pr->history.view();
+      // Margin: half the mean segment size, so that a re-search is needed only after the
+      // surfaces moved that far relative to each other.
+      double size_sum = 0.0;
+      for (std::size_t s = 0; s < nseg; ++s) {
+        const core::Index* q = &cp.segments[4 * s];
+        const auto d = [&](core::Index a, core::Index b) {
+          const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+          const double dx = model.x0[i] - model.x0[j], dy = model.y0[i] - model.y0[j],
+                       dz = model.z0[i] - model.z0[j];
+          return std::sqrt(dx * dx + dy * dy + dz * dz);
+        };
+        size_sum += std::max(d(q[0], q[2]), d(q[1], q[3]));
+      }
+      pr->margin = nseg > 0 ? 0.5 * size_sum / static_cast<double>(nseg) : 0.0;
+      double max_slave_offset = 0.0;
+      for (double o : cp.slave_offset)
+        max_slave_offset = std::max(max_slave_offset, o);
+      pr->seg_radius.resize(nseg);
+      double max_radius = 0.0;
+      for (std::size_t s = 0; s < nseg; ++s) {
+        // Offsets on both sides and a penetration as deep as both again, the cohesive band,
+        // and the margin.
+        pr->seg_radius[s] = 2.0 * (cp.segment_offset[s] + max_slave_offset) + capture + pr->margin;
+        max_radius = std::max(max_radius, pr->seg_radius[s]);
+      }
+      pr->far_gap = 2.0 * (capture + max_radius) + 1.0e-30;
+      // Nodes whose motion can bring a slave node within reach of a new segment.
+      std::vector<char> mark(model.node_count(), 0);
+      for (core::Index n : cp.slave_nodes)
+        mark[static_cast<std::size_t>(n)] = 1;
+      for (core::Index n : cp.segments)
+        mark[static_cast<std::size_t>(n)] = 1;
+      for (std::size_t i = 0; i < mark.size(); ++i) {
+        if (mark[i])
+          pr->tracked_nodes.push_back(static_cast<core::Index>(i));
+      }
+      pr->tracked_ref.assign(3 * pr->tracked_nodes.size(), 0.0);
+      pr->seg.assign(ns, -1);
+      pr->prev_seg.assign(ns, -1);
+      pr->shape.assign(4 * ns, 0.0);
+      pr->prev_shape.assign(4 * ns, 0.0);
+      pr->frame.assign(9 * ns, 0.0);
+      pr->side.assign(ns, 0);
+      for (auto* v :
+           {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal, &pr->k_tangent,
+            &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y, &pr->stored, &pr->work_part})
+        v->assign(ns, 0.0);
+      pr->area = cp.slave_area;
+      pr->force.assign(3 * ns, 0.0);
+      pr->prev_force.assign(3 * ns, 0.0);
+      passes_.push_back(std::move(pr));
+    }
+  }
+  tssfac_ = tssfac;
+}
+
+ContactSet::~ContactSet() = default;
+
+std::size_t ContactSet::slave_count() const {
+  std::size_t n = 0;
+  for (const auto& p : passes_)
+    n += p->pass->slave_count();
+  return n;
+}
+
+namespace {
+
+const double* at(const double* packed, core::Index node) {
+  return packed + kStride * static_cast<std::size_t>(node);
+}
+
+SegmentPoint project(const core::ContactPass& cp, core::Index s, const double* p,
+                     const double* packed) {
+  const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+  if (q[2] == q[3])
+    return project_triangle(p, at(packed, q[0]), at(packed, q[1]), at(packed, q[2]));
+  const double* c[4] = {at(packed, q[0]), at(packed, q[1]), at(packed, q[2]), at(packed, q[3])};
+  return project_quad(p, c);
+}
+
+// The segment of slave k: its current one while the projection stays inside it, else the
+// nearest candidate whose projection is at most MAXPAR - 1 outside (parametric measure).
+core::Index locate(const PassRuntime& pr, std::size_t k, const double* packed, SegmentPoint& best) {
+  const core::ContactPass& cp = *pr.pass;
+  const double* p = at(packed, cp.slave_nodes[k]);
+  const core::Index cur = pr.seg[k];
+  if (cur >= 0) {
+    const SegmentPoint sp = project(cp, cur, p, packed);
+    if (!sp.degenerate && sp.outside == 0.0 &&
+        std::fabs(sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)]) {
+      best = sp;
+      return cur;
+    }
+  }
+  const double tol = pr.iface->maxpar - 1.0;
+  double best_score = kInf;
+  core::Index found = -1;
+  for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
+    const core::Index s = pr.cand[c];
+    const SegmentPoint sp = project(cp, s, p, packed);
+    if (sp.degenerate || sp.outside > tol ||
+        std::fabs(sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)])
+      continue;
+    // About the true distance to the segment: the normal distance and, outside the segment,
+    // the parametric overshoot times half the segment size.
+    const double score = std::hypot(sp.distance, sp.outside * pr.margin);
+    if (score < best_score) {
+      best_score = score;
+      best = sp;
+      found = s;
+    }
+  }
+  return found;
+}
+
+// Effective mass m_s m_m / (m_s + m_m) of a slave node against a point of a segment; rigid
+// nodes count as infinitely heavy.
+double effective_mass(double ms, double mm) {
+  if (!std::isfinite(ms))
+    return std::isfinite(mm) ? mm : 0.0;
+  if (!std::isfinite(mm))
+    return ms;
+  return ms + mm > 0.0 ? ms * mm / (ms + mm) : 0.0;
+}
+
+// The penalty stiffness [force/length] of slave k against segment s (PENOPT, SOFT).
+double penalty(const PassRuntime& pr, std::size_t k, core::Index s, double m_eff) {
+  const core::ContactInterface& ci = *pr.iface;
+  const double ks = pr.pass->slave_stiffness[k];
+  const double km = pr.pass->segment_stiffness[static_cast<std::size_t>(s)];
+  double kk = ci.penopt == 2 ? km : ci.penopt == 3 ? ks : std::min(ks, km);
+  if (ci.penalty == core::PenaltyKind::mass && pr.dt0 > 0.0)
+    kk = std::max(kk, 0.5 * ci.sofscl * m_eff / (pr.dt0 * pr.dt0));
+  return kk;
+}
+
+}  // namespace
+
+double ContactSet::stable_step() const {
+  double dt = kInf;
+  for (const auto& p : passes_)
+    dt = std::min(dt, p->dt_vote);
+  return dt;
+}
+
+double ContactSet::energy() const {
+  double e = 0.0;
+  for (const auto& p : passes_)
+    e += p->work;
+  return e;
+}
+
+namespace {
+
+double node_mass(const std::vector<double>& mass, const unsigned char* rigid, core::Index n) {
+  const auto i = static_cast<std::size_t>(n);
+  return rigid != nullptr && rigid[i] ? kInf : mass[i];
+}
+
+void search(PassRuntime& pr, const double* packed, const std::vector<double>& mass,
+            const unsigned char* rigid, double tssfac) {
+  const core::ContactPass& cp = *pr.pass;
+  pr.grid.build(cp.segments, packed, kStride, pr.seg_radius);
+  pr.grid.query(cp.slave_nodes, packed, kStride, pr.cand_start, pr.cand);
+  for (std::size_t t = 0; t < pr.tracked_nodes.size(); ++t) {
+    const double* p = at(packed, pr.tracked_nodes[t]);
+    pr.tracked_ref[3 * t] = p[0];
+    pr.tracked_ref[3 * t + 1] = p[1];
+    pr.tracked_ref[3 * t + 2] = p[2];
+  }
+  pr.cycles_since_search = 0;
+  pr.searched = true;
+  // The step vote: a slave node on the stiffest spring it may meet, against the lightest
+  // master node, gets dt = TSSFAC sqrt(2 m_eff / k): half the two-mass spring's limit in
+  // frequency squared, leaving the other half to the elements at that node.
+  const bool cohesive = pr.iface->cohesive;
+  const double cn = pr.law.parameters().cn;
+  double vote = kInf;
+  const std::size_t ns = cp.slave_count();
+#pragma omp parallel for schedule(static) reduction(min : vote)
+  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+    const auto k = static_cast<std::size_t>(lk);
+    if (pr.cand_start[k] == pr.cand_start[k + 1])
+      continue;
+    const double ms = node_mass(mass, rigid, cp.slave_nodes[k]);
+    for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
+      const core::Index s = pr.cand[c];
+      double mm = kInf;
+      for (int j = 0; j < 4; ++j)
+        mm = std::min(mm, node_mass(mass, rigid, cp.segments[4 * static_cast<std::size_t>(s) + j]));
+      const double me = effective_mass(ms, mm);
+      double kk = penalty(pr, k, s, me);
+      if (cohesive)
+        kk = std::max(kk, cn * cp.slave_area[k]);
+      if (me > 0.0 && kk > 0.0)
+        vote = std::min(vote, tssfac * std::sqrt(2.0 * me / kk));
+    }
+  }
+  pr.dt_vote = vote;
+}
+
+// Geometry and law inputs of every slave node of a pass at the current positions; the first
+// half of the step's contact work with last cycle's forces. Returns nothing; fills the arrays.
+void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
+             const std::vector<double>& mass, const unsigned char* rigid) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t ns = cp.slave_count();
+  const law::BatchHistory& h = pr.hist;
+#pragma omp parallel for schedule(static)
+  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+    const auto k = static_cast<std::size_t>(lk);
+    const core::Index node = cp.slave_nodes[k];
+    const double* p = at(packed, node);
+    // First half of the trapezoidal work of the step just taken, with last cycle's force.
+    double w = 0.0;
+    if (pr.prev_seg[k] >= 0) {
+      const double* f = &pr.prev_force[3 * k];
+      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(pr.prev_seg[k])];
+      double du[3] = {p[3], p[4], p[5]};
+      for (int j = 0; j < 4; ++j) {
+        const double nj = pr.prev_shape[4 * k + j];
+        const double* v = at(packed, q[j]);
+        du[0] -= nj * v[3];
+        du[1] -= nj * v[4];
+        du[2] -= nj * v[5];
+      }
+      w -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+    }
+    pr.work_part[k] = w;
+    pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
+    SegmentPoint sp;
+    const core::Index s = locate(pr, k, packed, sp);
+    pr.seg[k] = s;
+    if (s < 0) {
+      pr.gap[k] = pr.far_gap;
+      pr.slip_x[k] = pr.slip_y[k] = 0.0;
+      pr.m_eff[k] = 0.0;
+      continue;
+    }
+    const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+    for (int j = 0; j < 4; ++j)
+      pr.shape[4 * k + j] = sp.shape[j];
+    // Side: fixed while the node is in contact or bonded; otherwise the side it is on when
+    // clear of both surfaces (automatic orientation of shells touched from either side).
+    const double offset = cp.slave_offset[k] + cp.segment_offset[static_cast<std::size_t>(s)];
+    const auto state = static_cast<law::NodeState>(h.state[k]);
+    const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
+    signed char& side = pr.side[k];
+    if (side == 0 || (free && std::fabs(sp.distance) > offset))
+      side = sp.distance >= 0.0 ? 1 : -1;
+    pr.gap[k] = side * sp.distance - offset;
+    double* fr = &pr.frame[9 * k];
+    const double n[3] = {side * sp.normal[0], side * sp.normal[1], side * sp.normal[2]};
+    // Tangent axes from the global x axis (y where the normal is close to x): continuous as
+    // the node moves from segment to segment, so the stick spring keeps its meaning.
+    double e1[3] = {1.0 - n[0] * n[0], -n[0] * n[1], -n[0] * n[2]};
+    double len = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    if (len < 0.1) {
+      e1[0] = -n[1] * n[0];
+      e1[1] = 1.0 - n[1] * n[1];
+      e1[2] = -n[1] * n[2];
+      len = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    }
+    e1[0] /= len;
+    e1[1] /= len;
+    e1[2] /= len;
+    const double e2[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2],
+                          n[0] * e1[1] - n[1] * e1[0]};
+    for (int c = 0; c < 3; ++c) {
+      fr[c] = n[c];
+      fr[3 + c] = e1[c];
+      fr[6 + c] = e2[c];
+    }
+    // Relative displacement of the step: slave minus the segment point (same shape
+    // functions as the force distribution).
+    double du[3] = {p[3], p[4], p[5]};
+    double mm = 0.0;
+    for (int j = 0; j < 4; ++j) {
+      const double nj = sp.shape[j];
+      const double* v = at(packed, q[j]);
+      du[0] -= nj * v[3];
+      du[1] -= nj * v[4];
+      du[2] -= nj * v[5];
+      if (nj > 0.0)
+        mm += nj * node_mass(mass, rigid, q[j]);
+    }
+    pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
+    pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
+    const double me = effective_mass(node_mass(mass, rigid, node), mm);
+    pr.m_eff[k] = me;
+    const double kk = penalty(pr, k, s, me);
+    pr.k_normal[k] = kk / cp.slave_area[k];
+    pr.k_tangent[k] = pr.k_normal[k];
+  }
+}
+
+}  // namespace
+
+void ContactSet::start(const double* packed) {
+  for (auto& pp : passes_) {
+    PassRuntime& pr = *pp;
+    search(pr, packed, mass_, rigid_, tssfac_);
+    ++searches_;
+    const std::size_t ns = pr.pass->slave_count();
+    measure(pr, 0.0, packed, nullptr, mass_, rigid_);
+    pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
+    // Initial penetrations of nodes that are not bonded: the penalty will push them out in
+    // the first cycles (a jolt the user should know about).
+    std::size_t count = 0;
+    double deepest = 0.0;
+    core::Index where = -1;
+    for (std::size_t k = 0; k < ns; ++k) {
+      if (pr.seg[k] < 0 || pr.gap[k] >= 0.0)
+        continue;
+      if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact &&
+          pr.iface->cohesive && pr.law.parameters().bond_tol >= -pr.gap[k])
+        continue;  // bonded at t = 0 within BOND_TOL
+      ++count;
+      if (pr.gap[k] < deepest) {
+        deepest = pr.gap[k];
+        where = pr.pass->slave_nodes[k];
+      }
+    }
+    if (count > 0) {
+      std::ostringstream os;
+      os << pr.iface->keyword << " " << pr.iface->id << ": " << count
+         << " slave nodes penetrate at t = 0 (deepest " << -deepest << " at node "
+         << model_.node_id[static_cast<std::size_t>(where)] << ")";
+      warnings_.push_back(os.str());
+    }
+  }
+}
+
+void ContactSet::apply(double t, double dt, const double* packed, const double* temperature,
+                       double* fx, double* fy, double* fz) {
+  for (auto& pp : passes_) {
+    PassRuntime& pr = *pp;
+    const core::ContactPass& cp = *pr.pass;
+    const std::size_t ns = cp.slave_count();
+    if (t < pr.iface->birth || t > pr.iface->death) {
+      pr.resultant = {0.0, 0.0, 0.0};
+      std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
+      continue;
+    }
+    // Re-search once the contact nodes moved far enough to bring a slave node near a segment
+    // outside its candidate list (or at the deck's fixed interval).
+    ++pr.cycles_since_search;
+    double moved = 0.0;
+    const std::size_t nt = pr.tracked_nodes.size();
+#pragma omp parallel for schedule(static) reduction(max : moved)
+    for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
+      const auto i = static_cast<std::size_t>(lt);
+      const double* p = at(packed, pr.tracked_nodes[i]);
+      const double dx = p[0] - pr.tracked_ref[3 * i], dy = p[1] - pr.tracked_ref[3 * i + 1],
+                   dz = p[2] - pr.tracked_ref[3 * i + 2];
+      moved = std::max(moved, dx * dx + dy * dy + dz * dz);
+    }
+    const int interval = pr.iface->search_interval;
+    if (!pr.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
+        (interval > 0 && pr.cycles_since_search >= interval)) {
+      search(pr, packed, mass_, rigid_, tssfac_);
+      ++searches_;
+    }
+
+    measure(pr, dt, packed, temperature, mass_, rigid_);
+    law::BatchInput in;
+    in.count = ns;
+    in.gap = pr.gap.data();
+    in.slip_x = pr.slip_x.data();
+    in.slip_y = pr.slip_y.data();
+    in.temperature = pr.temperature.data();
+    in.k_normal = pr.k_normal.data();
+    in.k_tangent = pr.k_tangent.data();
+    in.area = pr.area.data();
+    in.mass = pr.m_eff.data();
+    in.dt = dt;
+    law::BatchOutput out{pr.pressure.data(), pr.tau_x.data(), pr.tau_y.data(), pr.stored.data()};
+    pr.law.update_batch(in, pr.hist, out);
+
+    // Forces from the tractions, and the second half of the step's work.
+#pragma omp parallel for schedule(static)
+    for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+      const auto k = static_cast<std::size_t>(lk);
+      double* f = &pr.force[3 * k];
+      const core::Index s = pr.seg[k];
+      if (s < 0) {
+        f[0] = f[1] = f[2] = 0.0;
+        continue;
+      }
+      const double* fr = &pr.frame[9 * k];
+      const double a = cp.slave_area[k];
+      const double pn = pr.pressure[k] * a, t1 = pr.tau_x[k] * a, t2 = pr.tau_y[k] * a;
+      for (int c = 0; c < 3; ++c)
+        f[c] = pn * fr[c] + t1 * fr[3 + c] + t2 * fr[6 + c];
+      if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
+        continue;
+      const double* p = at(packed, cp.slave_nodes[k]);
+      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+      double du[3] = {p[3], p[4], p[5]};
+      for (int j = 0; j < 4; ++j) {
+        const double nj = pr.shape[4 * k + j];
+        const double* v = at(packed, q[j]);
+        du[0] -= nj * v[3];
+        du[1] -= nj * v[4];
+        du[2] -= nj * v[5];
+      }
+      pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+    }
+    pr.work += chunked_sum(ns, [&](std::size_t k) { return pr.work_part[k]; });
+
+    // Scatter in slave order: each node receives its contributions in the same order for any
+    // number of threads.
+    std::array<double, 3> r{};
+    const double sign = cp.slave_side_sign;
+    for (std::size_t k = 0; k < ns; ++k) {
+      const core::Index s = pr.seg[k];
+      pr.prev_seg[k] = s;
+      if (s < 0)
+        continue;
+      const double* f = &pr.force[3 * k];
+      if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0) {
+        pr.prev_seg[k] = -1;
+        continue;
+      }
+      const auto sn = static_cast<std::size_t>(cp.slave_nodes[k]);
+      fx[sn] -= f[0];
+      fy[sn] -= f[1];
+      fz[sn] -= f[2];
+      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+      const int nodes = q[2] == q[3] ? 3 : 4;
+      for (int j = 0; j < nodes; ++j) {
+        const double nj = pr.shape[4 * k + j];
+        const auto m = static_cast<std::size_t>(q[j]);
+        fx[m] += nj * f[0];
+        fy[m] += nj * f[1];
+        fz[m] += nj * f[2];
+      }
+      for (int c = 0; c < 3; ++c)
+        r[static_cast<std::size_t>(c)] += sign * f[c];
+    }
+    pr.resultant = r;
+    std::swap(pr.prev_force, pr.force);
+    // `shape` then holds older values: measure() rewrites it for every located node, and
+    // only located nodes read it.
+    std::swap(pr.prev_shape, pr.shape);
+  }
+}
+
+std::vector<InterfaceReport> ContactSet::report() const {
+  std::vector<InterfaceReport> out;
+  const core::ContactInterface* last = nullptr;
+  for (const auto& pp : passes_) {
+    const PassRuntime& pr = *pp;
+    if (pr.iface != last) {
+      out.push_back({});
+      out.back().id = pr.iface->id;
+      last = pr.iface;
+    }
+    InterfaceReport& r = out.back();
+    for (int c = 0; c < 3; ++c)
+      r.force[static_cast<std::size_t>(c)] += pr.resultant[static_cast<std::size_t>(c)];
+    r.work += pr.work;
+    const law::BatchHistory& h = pr.hist;
+    const std::size_t ns = pr.pass->slave_count();
+    for (std::size_t k = 0; k < ns; ++k) {
+      r.stored += pr.stored[k];
+      r.damage += h.e_damage[k];
+      r.viscous += h.e_viscous[k];
+      r.friction += h.e_friction[k];
+      r.damping += h.e_damping[k];
+      r.healing += h.e_healing[k];
+      const auto st = static_cast<law::NodeState>(h.state[k]);
+      if (st == law::NodeState::contact && pr.pressure[k] > 0.0)
+        ++r.in_contact;
+      if (st == law::NodeState::separating)
+        ++r.bonded;
+    }
+  }
+  return out;
+}
+
+void ContactSet::cohesive_results(std::vector<SlaveNodeResult>& out) const {
+  out.clear();
+  for (const auto& pp : passes_) {
+    const PassRuntime& pr = *pp;
+    if (!pr.iface->cohesive)
+      continue;
+    const std::size_t ns = pr.pass->slave_count();
+    for (std::size_t k = 0; k < ns; ++k) {
+      SlaveNodeResult r;
+      r.node = pr.pass->slave_nodes[k];
+      r.interface = pr.iface->id;
+      r.state = static_cast<law::NodeState>(pr.hist.state[k]);
+      r.gap = pr.seg[k] >= 0 ? pr.gap[k] : std::numeric_limits<double>::quiet_NaN();
+      r.pressure = pr.pressure[k];
+      r.tau = std::hypot(pr.tau_x[k], pr.tau_y[k]);
+      r.beta = pr.hist.beta[k];
+      out.push_back(r);
+    }
+  }
+}
+
+}  // namespace plyform::contact

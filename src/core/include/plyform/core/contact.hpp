@@ -1,0 +1,73 @@
+#pragma once
+// Contact interfaces of the runtime model: slave nodes against master segments, with every
+// geometric and stiffness datum the contact pass needs precomputed by setup (flat arrays,
+// local node indices). The interlayer law (src/law) gives the tractions of every interface: a
+// *USER_INTERFACE_FRICTION puts the cohesive law on it; otherwise the law runs as a plain
+// penalty-Coulomb contact (no adhesion, friction FS/FD/DC/VC, damping VDC). docs/contact.md.
+
+#include <string>
+#include <vector>
+
+#include "plyform/core/types.hpp"
+#include "plyform/law/parameters.hpp"
+
+namespace plyform::core {
+
+enum class ContactKind : int {
+  one_way,    ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
+  two_way,    ///< *CONTACT_SURFACE_TO_SURFACE
+  forming,    ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
+  automatic,  ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
+};
+
+/// How the penalty stiffness is found (SOFT of the contact).
+enum class PenaltyKind : int {
+  material = 0,  ///< SOFT = 0: from the bulk modulus and the element geometry
+  mass = 1,      ///< SOFT = 1: the larger of that and SOFSCL m*/(2 dt0^2)
+};
+
+/// One sweep of slave nodes against master segments. A one-way contact has one, a two-way
+/// contact two (the second with the sides swapped).
+struct ContactPass {
+  // Slave nodes and what they carry into the contact.
+  std::vector<Index> slave_nodes;
+  std::vector<double> slave_offset;     ///< contact half-thickness at the node [length]
+  std::vector<double> slave_area;       ///< tributary area [length^2]
+  std::vector<double> slave_stiffness;  ///< SOFT = 0 node stiffness [force/length]
+  // Master segments: 4 node indices each, a triangle repeats its third node.
+  std::vector<Index> segments;
+  std::vector<double> segment_offset;     ///< contact half-thickness [length]
+  std::vector<double> segment_stiffness;  ///< SOFT = 0 segment stiffness [force/length]
+  /// +1 when the slave nodes are the interface's slave side (rcforc sums the force on them),
+  /// -1 in the swapped pass of a two-way contact (the master nodes are the slave side then).
+  int slave_side_sign = 1;
+  [[nodiscard]] std::size_t slave_count() const { return slave_nodes.size(); }
+  [[nodiscard]] std::size_t segment_count() const { return segments.size() / 4; }
+};
+
+struct ContactInterface {
+  GlobalId id = 0;      ///< CID of the deck (0 when the deck gave none)
+  std::string keyword;  ///< the *CONTACT_ keyword, for messages
+  ContactKind kind = ContactKind::one_way;
+  std::vector<ContactPass> passes;
+  PenaltyKind penalty = PenaltyKind::material;
+  double sofscl = 0.1;      ///< SOFSCL (SOFT = 1)
+  int penopt = 1;           ///< 1 min(slave, master), 2 master, 3 slave stiffness
+  double maxpar = 1.025;    ///< a projection this far outside a segment still counts
+  int search_interval = 0;  ///< cycles between full searches (0: only when motion asks)
+  double birth = 0.0;
+  double death = 1e20;
+  bool cohesive = false;  ///< the law has adhesion (a *USER_INTERFACE_FRICTION names it)
+  law::Parameters law;    ///< the interface law (cohesive, or penalty-Coulomb)
+};
+
+/// A prescribed temperature history T(t) = scale * curve(t) (curve < 0: constant scale).
+struct TemperatureHistory {
+  Index node = 0;
+  Index curve = -1;
+  double scale = 1.0;
+  double birth = 0.0;
+  double death = 1e20;
+};
+
+}  // namespace plyform::core

@@ -1,0 +1,510 @@
+#include "build_contact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <variant>
+
+#include "plyform/setup/cohesive_law.hpp"
+
+namespace plyform::setup {
+namespace {
+
+using core::Index;
+using Diagnostics = std::vector<keyword::Diagnostic>;
+
+// Outward faces of an 8-node solid in LS-DYNA's node order (0-based local nodes).
+constexpr int kHexFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+using Vec = std::array<double, 3>;
+
+Vec sub(const Vec& a, const Vec& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double norm(const Vec& a) {
+  return std::sqrt(dot(a, a));
+}
+
+// A contact surface: segments with what their stiffness and offset need.
+struct Surface {
+  std::vector<Index> segments;    // 4 per segment; a triangle repeats its third node
+  std::vector<double> area;       // per segment
+  std::vector<double> stiffness;  // per segment: K A / diagonal (shell) or K A^2 / V (solid)
+  std::vector<double> thickness;  // per segment: shell thickness (0 for solid faces)
+  std::vector<char> rigid;        // per segment: on a rigid part
+  [[nodiscard]] std::size_t size() const { return area.size(); }
+};
+
+struct Geometry {
+  const core::Model& m;
+  [[nodiscard]] Vec x(Index n) const {
+    const auto i = static_cast<std::size_t>(n);
+    return {m.x0[i], m.y0[i], m.z0[i]};
+  }
+  [[nodiscard]] double area(const Index* q) const {
+    if (q[2] == q[3])
+      return 0.5 * norm(cross(sub(x(q[1]), x(q[0])), sub(x(q[2]), x(q[0]))));
+    return 0.5 * norm(cross(sub(x(q[2]), x(q[0])), sub(x(q[3]), x(q[1]))));
+  }
+  [[nodiscard]] double diagonal(const Index* q) const {
+    if (q[2] == q[3]) {
+      return std::max(
+          {norm(sub(x(q[1]), x(q[0]))), norm(sub(x(q[2]), x(q[1]))), norm(sub(x(q[0]), x(q[2])))});
+    }
+    return std::max(norm(sub(x(q[2]), x(q[0]))), norm(sub(x(q[3]), x(q[1]))));
+  }
+  // Volume of a solid from its outward faces (divergence theorem over their triangles).
+  [[nodiscard]] double volume(const Index* c) const {
+    double v = 0.0;
+    for (const auto& f : kHexFaces) {
+      const Vec a = x(c[f[0]]), b = x(c[f[1]]), cc = x(c[f[2]]), d = x(c[f[3]]);
+      v += dot(a, cross(b, cc)) + dot(a, cross(cc, d));
+    }
+    return v / 6.0;
+  }
+};
+
+// A face of 4 node indices with repeats removed: a quad, a triangle (q[2] == q[3]) or nothing.
+bool normalise_face(std::array<Index, 4>& q) {
+  std::array<Index, 4> u{};
+  int n = 0;
+  for (Index v : q) {
+    if (n > 0 && (u[static_cast<std::size_t>(n - 1)] == v))
+      continue;
+    if (n == 3 && u[0] == v)
+      continue;
+    u[static_cast<std::size_t>(n++)] = v;
+  }
+  if (n >= 2 && u[static_cast<std::size_t>(n - 1)] == u[0])
+    --n;
+  if (n < 3)
+    return false;
+  if (n == 3)
+    u[3] = u[2];
+  q = u;
+  return true;
+}
+
+std::array<Index, 4> sorted_key(const Index* q) {
+  std::array<Index, 4> k{q[0], q[1], q[2], q[3]};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+struct ContactBuilder {
+  const model::ModelDesc& d;
+  core::Model& m;
+  Diagnostics& errors;
+  Diagnostics& warnings;
+  Geometry geo{m};
+  std::unordered_map<std::int64_t, Index> node;
+  std::unordered_map<std::int64_t, Index> part;
+
+  void error(const model::SourceLocation& w, const std::string& kw, const std::string& field,
+             const std::string& msg) {
+    errors.push_back({w, kw, field, msg});
+  }
+
+  void index() {
+    for (std::size_t i = 0; i < m.node_id.size(); ++i)
+      node.emplace(m.node_id[i], static_cast<Index>(i));
+    for (std::size_t i = 0; i < m.parts.size(); ++i)
+      part.emplace(m.parts[i].id, static_cast<Index>(i));
+  }
+
+  [[nodiscard]] bool rigid_material(Index mat) const {
+    return std::holds_alternative<core::RigidMaterial>(m.materials[static_cast<std::size_t>(mat)]);
+  }
+
+  // Segments of the shells and exterior solid faces of the parts marked in `pick`.
+  Surface surface_of_parts(const std::vector<char>& pick) {
+    Surface s;
+    const auto add = [&](const Index* q, double k_base, double t, bool rigid) {
+      for (int j = 0; j < 4; ++j)
+        s.segments.push_back(q[j]);
+      s.area.push_back(geo.area(q));
+      s.stiffness.push_back(k_base);
+      s.thickness.push_back(t);
+      s.rigid.push_back(rigid ? 1 : 0);
+    };
+    for (const core::ShellBlock& b : m.shell_blocks) {
+      if (!pick[static_cast<std::size_t>(b.part)])
+        continue;
+      const double kb = core::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
+      for (std::size_t e = 0; e < b.size(); ++e) {
+        const Index* q = &b.connectivity[4 * e];
+        const int nn = q[2] == q[3] ? 3 : 4;
+        double t = 0.0;
+        for (int j = 0; j < nn; ++j)
+          t += b.thickness[4 * e + static_cast<std::size_t>(j)];
+        add(q, kb * geo.area(q) / geo.diagonal(q), t / nn, rigid_material(b.material));
+      }
+    }
+    for (const core::SolidBlock& b : m.solid_blocks) {
+      if (!pick[static_cast<std::size_t>(b.part)])
+        continue;
+      const double kb = core::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
+      // Exterior faces: those of one element only (among the solids of these parts).
+      std::map<std::array<Index, 4>, int> count;
+      for (std::size_t e = 0; e < b.size(); ++e) {
+        for (const auto& f : kHexFaces) {
+          std::array<Index, 4> q{};
+          for (int j = 0; j < 4; ++j)
+            q[static_cast<std::size_t>(j)] = b.connectivity[8 * e + static_cast<std::size_t>(f[j])];
+          if (normalise_face(q))
+            ++count[sorted_key(q.data())];
+        }
+      }
+      for (std::size_t e = 0; e < b.size(); ++e) {
+        const Index* c = &b.connectivity[8 * e];
+        const double v = geo.volume(c);
+        for (const auto& f : kHexFaces) {
+          std::array<Index, 4> q{};
+          for (int j = 0; j < 4; ++j)
+            q[static_cast<std::size_t>(j)] = c[f[j]];
+          if (!normalise_face(q) || count[sorted_key(q.data())] != 1)
+            continue;
+          const double a = geo.area(q.data());
+          add(q.data(), v > 0.0 ? kb * a * a / v : 0.0, 0.0, rigid_material(b.material));
+        }
+      }
+    }
+    return s;
+  }
+
+  // Every shell and exterior solid face of the model, keyed by its sorted nodes.
+  Surface model_surface;
+  std::map<std::array<Index, 4>, std::size_t> model_face;
+  void ensure_model_surface() {
+    if (!model_face.empty() || m.parts.empty())
+      return;
+    model_surface = surface_of_parts(std::vector<char>(m.parts.size(), 1));
+    for (std::size_t s = 0; s < model_surface.size(); ++s)
+      model_face.emplace(sorted_key(&model_surface.segments[4 * s]), s);
+  }
+
+  // The surface a contact side names; nullopt after an error. `nodes_only`: a node set.
+  std::optional<Surface> side_surface(const model::ContactDesc& c, model::ContactSideType type,
+                                      int id, const char* field, std::vector<Index>& node_list) {
+    node_list.clear();
+    if (type == model::ContactSideType::part || type == model::ContactSideType::part_set) {
+      std::vector<char> pick(m.parts.size(), 0);
+      std::vector<int> ids;
+      if (type == model::ContactSideType::part) {
+        ids.push_back(id);
+      } else {
+        for (const auto& ps : d.part_sets)
+          if (ps.id == id)
+            ids = ps.ids;
+      }
+      for (int p : ids) {
+        const auto it = part.find(p);
+        if (it == part.end()) {
+          error(c.card1, c.keyword, field, "part " + std::to_string(p) + " does not exist");
+          return std::nullopt;
+        }
+        pick[static_cast<std::size_t>(it->second)] = 1;
+      }
+      Surface s = surface_of_parts(pick);
+      if (s.size() == 0) {
+        error(c.card1, c.keyword, field,
+              "the parts of " + std::string(field) + " " + std::to_string(id) +
+                  " have no shell element or solid face to make a contact surface");
+        return std::nullopt;
+      }
+      return s;
+    }
+    if (type == model::ContactSideType::segment_set) {
+      const model::SetSegmentDesc* set = nullptr;
+      for (const auto& ss : d.segment_sets)
+        if (ss.id == id)
+          set = &ss;
+      if (set == nullptr) {
+        error(c.card1, c.keyword, field, "*SET_SEGMENT " + std::to_string(id) + " does not exist");
+        return std::nullopt;
+      }
+      ensure_model_surface();
+      Surface s;
+      for (std::size_t k = 0; k < set->segments.size(); ++k) {
+        std::array<Index, 4> q{};
+        bool ok = true;
+        for (int j = 0; j < 4; ++j) {
+          const auto it = node.find(set->segments[k][static_cast<std::size_t>(j)]);
+          ok = ok && it != node.end();
+          if (ok)
+            q[static_cast<std::size_t>(j)] = it->second;
+        }
+        if (!ok || !normalise_face(q)) {
+          error(set->segments_where[k], "*SET_SEGMENT", "N1",
+                "segment " + std::to_string(k + 1) + " of set " + std::to_string(id) +
+                    " is not a triangle or quadrilateral of existing nodes");
+          return std::nullopt;
+        }
+        const auto it = model_face.find(sorted_key(q.data()));
+        if (it == model_face.end()) {
+          error(set->segments_where[k], "*SET_SEGMENT", "N1",
+                "segment " + std::to_string(k + 1) + " of set " + std::to_string(id) +
+                    " is neither a shell element nor an exterior face of a solid: its "
+                    "stiffness and thickness are unknown");
+          return std::nullopt;
+        }
+        const std::size_t f = it->second;
+        for (Index v : q)
+          s.segments.push_back(v);  // the set's own node order (its orientation)
+        s.area.push_back(model_surface.area[f]);
+        s.stiffness.push_back(model_surface.stiffness[f]);
+        s.thickness.push_back(model_surface.thickness[f]);
+        s.rigid.push_back(model_surface.rigid[f]);
+      }
+      return s;
+    }
+    // A node set (slave side only): the nodes carry the share of the model's surfaces.
+    const model::SetListDesc* set = nullptr;
+    for (const auto& ns : d.node_sets)
+      if (ns.id == id)
+        set = &ns;
+    if (set == nullptr) {
+      error(c.card1, c.keyword, field, "*SET_NODE_LIST " + std::to_string(id) + " does not exist");
+      return std::nullopt;
+    }
+    for (int n : set->ids) {
+      const auto it = node.find(n);
+      if (it == node.end()) {
+        error(c.card1, c.keyword, field, "node " + std::to_string(n) + " does not exist");
+        return std::nullopt;
+      }
+      node_list.push_back(it->second);
+    }
+    ensure_model_surface();
+    return model_surface;
+  }
+
+  // The slave-node data of a pass from the slave surface: each node gets an equal share of
+  // the area and stiffness of each segment around it, and the mean offset of those segments.
+  bool fill_slaves(const model::ContactDesc& c, const Surface& s, const std::vector<Index>& only,
+                   double factor, double sst, double sfst, bool rigid_offset,
+                   core::ContactPass& p) {
+    const std::size_t n = m.node_count();
+    std::vector<double> area(n, 0.0), stiff(n, 0.0), thick(n, 0.0), count(n, 0.0);
+    std::vector<char> rigid(n, 0);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const Index* q = &s.segments[4 * k];
+      const int nn = q[2] == q[3] ? 3 : 4;
+      for (int j = 0; j < nn; ++j) {
+        const auto i = static_cast<std::size_t>(q[j]);
+        area[i] += s.area[k] / nn;
+        stiff[i] += s.stiffness[k] / nn;
+        thick[i] += s.thickness[k];
+        count[i] += 1.0;
+        rigid[i] = static_cast<char>(rigid[i] | s.rigid[k]);
+      }
+    }
+    std::vector<Index> nodes = only;
+    if (nodes.empty()) {
+      for (std::size_t i = 0; i < n; ++i)
+        if (count[i] > 0.0)
+          nodes.push_back(static_cast<Index>(i));
+    }
+    for (Index v : nodes) {
+      const auto i = static_cast<std::size_t>(v);
+      if (!(area[i] > 0.0)) {
+        error(c.card1, c.keyword, "SSID",
+              "slave node " + std::to_string(m.node_id[i]) +
+                  " belongs to no shell element or solid face: it has no contact area");
+        return false;
+      }
+      const double t = count[i] > 0.0 ? thick[i] / count[i] : 0.0;
+      const bool offset = !rigid[i] || rigid_offset;
+      p.slave_nodes.push_back(v);
+      p.slave_area.push_back(area[i]);
+      p.slave_stiffness.push_back(factor * stiff[i]);
+      p.slave_offset.push_back(offset ? 0.5 * (sst > 0.0 ? sst : sfst * t) : 0.0);
+    }
+    return true;
+  }
+
+  void fill_master(const Surface& s, double factor, double mst, double sfmt, bool rigid_offset,
+                   core::ContactPass& p) {
+    p.segments = s.segments;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      const bool offset = !s.rigid[k] || rigid_offset;
+      p.segment_offset.push_back(offset ? 0.5 * (mst > 0.0 ? mst : sfmt * s.thickness[k]) : 0.0);
+      p.segment_stiffness.push_back(factor * s.stiffness[k]);
+    }
+  }
+
+  law::Parameters penalty_law(const model::ContactDesc& c) {
+    double fs = c.fs, fd = c.fd, dc = c.dc, vc = c.vc;
+    if (fs == 0.0 && d.control_contact && d.control_contact->sfric > 0.0) {
+      fs = d.control_contact->sfric;
+      fd = d.control_contact->dfric;
+      dc = d.control_contact->edc;
+      vc = d.control_contact->vfc;
+    }
+    law::Parameters p;
+    p.cn = 1.0;
+    p.sigma_max = {1.0, 1.0, -1};
+    p.eta = 1.0;
+    p.beta0 = 0.0;  // no adhesion, ever: beta stays 0 (no healing either)
+    p.mu = {fs * c.fsf, fs * c.fsf, -1};
+    p.decay_dc = dc;
+    p.dynamic_ratio = fs > 0.0 ? fd / fs : 1.0;
+    p.vdc = c.vdc;
+    p.friction_limit = vc * c.vsf;
+    return p;
+  }
+
+  void build() {
+    index();
+    const double slsfac =
+        d.control_contact && d.control_contact->slsfac > 0.0 ? d.control_contact->slsfac : 0.1;
+    const int shlthk = d.control_contact ? d.control_contact->shlthk : 0;
+    const int penopt =
+        d.control_contact && d.control_contact->penopt > 0 ? d.control_contact->penopt : 1;
+    const int nsbcs = d.control_contact ? d.control_contact->nsbcs : 0;
+    for (const model::ContactDesc& c : d.contacts) {
+      core::ContactInterface ci;
+      ci.id = c.id;
+      ci.keyword = c.keyword;
+      ci.kind = c.kind == model::ContactKind::one_way_surface_to_surface
+                    ? core::ContactKind::one_way
+                : c.kind == model::ContactKind::surface_to_surface ? core::ContactKind::two_way
+                : c.kind == model::ContactKind::forming_one_way_surface_to_surface
+                    ? core::ContactKind::forming
+                    : core::ContactKind::automatic;
+      ci.penalty = c.soft == 1 ? core::PenaltyKind::mass : core::PenaltyKind::material;
+      ci.sofscl = c.sofscl;
+      ci.penopt = penopt;
+      ci.maxpar = c.maxpar;
+      ci.search_interval = c.bsort > 0 ? c.bsort : nsbcs;
+      ci.birth = c.birth;
+      ci.death = c.death;
+      const model::UserInterfaceFrictionDesc* uif = nullptr;
+      for (const auto& u : d.user_interface_frictions)
+        if (c.id != 0 && u.contact_id == c.id)
+          uif = &u;
+      if (uif != nullptr) {
+        CohesiveLawBuild law = build_cohesive_law(d, *uif);
+        if (!law.parameters) {
+          for (auto& e : law.errors)
+            errors.push_back(std::move(e));
+          continue;
+        }
+        ci.cohesive = true;
+        ci.law = *law.parameters;
+        if (c.fs != 0.0 || c.fd != 0.0 || c.dc != 0.0 || c.vc != 0.0 || c.vdc != 0.0) {
+          warnings.push_back({c.card1, c.keyword, "FS",
+                              "contact " + std::to_string(c.id) +
+                                  " has a cohesive law (*USER_INTERFACE_FRICTION): its friction "
+                                  "and damping come from the law's constants; FS, FD, DC, VC "
+                                  "and VDC of the contact are not used"});
+        }
+      } else {
+        ci.law = penalty_law(c);
+      }
+      // Rigid shells (tools) are offset only in automatic contacts or with SHLTHK = 2: a tool
+      // mesh is the tool's surface.
+      const bool rigid_offset = ci.kind == core::ContactKind::automatic || shlthk == 2;
+      std::vector<Index> slave_only, master_only;
+      auto slave = side_surface(c, c.sstyp, c.ssid, "SSID", slave_only);
+      auto master = side_surface(c, c.mstyp, c.msid, "MSID", master_only);
+      if (!slave || !master)
+        continue;
+      const bool two_way =
+          ci.kind == core::ContactKind::two_way || ci.kind == core::ContactKind::automatic;
+      if (two_way && c.sstyp == model::ContactSideType::node_set) {
+        error(c.card1, c.keyword, "SSTYP",
+              "a two-way contact needs segments on its slave side: SSTYP 4 (node set) gives "
+              "none; use a part, part set or segment set, or a ONE_WAY contact");
+        continue;
+      }
+      core::ContactPass a;
+      if (!fill_slaves(c, *slave, slave_only, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, a))
+        continue;
+      fill_master(*master, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, a);
+      ci.passes.push_back(std::move(a));
+      if (two_way) {
+        core::ContactPass b;
+        if (!fill_slaves(c, *master, {}, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, b))
+          continue;
+        fill_master(*slave, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, b);
+        b.slave_side_sign = -1;
+        ci.passes.push_back(std::move(b));
+      }
+      m.contacts.push_back(std::move(ci));
+    }
+  }
+};
+
+}  // namespace
+
+void build_contacts(const model::ModelDesc& desc, core::Model& model, Diagnostics& errors,
+                    Diagnostics& warnings) {
+  if (desc.contacts.empty())
+    return;
+  ContactBuilder b{desc, model, errors, warnings, Geometry{model}, {}, {}, {}, {}};
+  b.build();
+}
+
+void build_temperatures(const model::ModelDesc& desc, core::Model& model, Diagnostics& errors) {
+  if (desc.initial_temperatures.empty() && desc.temperature_histories.empty())
+    return;
+  std::unordered_map<std::int64_t, Index> node;
+  for (std::size_t i = 0; i < model.node_id.size(); ++i)
+    node.emplace(model.node_id[i], static_cast<Index>(i));
+  std::unordered_map<int, Index> curve;
+  for (std::size_t i = 0; i < desc.curves.size(); ++i)  // model.curves is in deck order
+    curve.emplace(desc.curves[i].id, static_cast<Index>(i));
+  const auto targets = [&](model::NodeTarget t, int id, const model::SourceLocation& where,
+                           const char* kw) {
+    std::vector<Index> v;
+    const auto add = [&](int n) {
+      const auto it = node.find(n);
+      if (it == node.end())
+        errors.push_back({where, kw, "NID", "node " + std::to_string(n) + " does not exist"});
+      else
+        v.push_back(it->second);
+    };
+    if (t == model::NodeTarget::kNode) {
+      add(id);
+      return v;
+    }
+    for (const auto& s : desc.node_sets)
+      if (s.id == id)
+        for (int n : s.ids)
+          add(n);
+    return v;
+  };
+  model.temperature0.assign(model.node_count(), 0.0);
+  for (const model::InitialTemperatureDesc& t : desc.initial_temperatures) {
+    for (Index i : targets(t.target, t.target_id, t.where, "*INITIAL_TEMPERATURE"))
+      model.temperature0[static_cast<std::size_t>(i)] = t.temperature;
+  }
+  for (const model::BoundaryTemperatureDesc& b : desc.temperature_histories) {
+    Index c = -1;
+    if (b.curve_id != 0) {
+      const auto it = curve.find(b.curve_id);
+      if (it == curve.end()) {
+        errors.push_back({b.where, "*BOUNDARY_TEMPERATURE", "LCID",
+                          "curve " + std::to_string(b.curve_id) + " does not exist"});
+        continue;
+      }
+      c = it->second;
+    }
+    for (Index i : targets(b.target, b.target_id, b.where, "*BOUNDARY_TEMPERATURE"))
+      model.temperature_histories.push_back({i, c, b.cmult, b.birth, b.death});
+  }
+}
+
+}  // namespace plyform::setup
