@@ -37,12 +37,21 @@ KeywordSpec mat_027_keyword();
 KeywordSpec hourglass_keyword();
 KeywordSpec set_node_list_keyword();
 KeywordSpec set_part_list_keyword();
+KeywordSpec set_segment_keyword();
+KeywordSpec contact_one_way_surface_to_surface_keyword();
+KeywordSpec contact_surface_to_surface_keyword();
+KeywordSpec contact_forming_one_way_surface_to_surface_keyword();
+KeywordSpec contact_automatic_surface_to_surface_keyword();
 KeywordSpec boundary_spc_node_keyword();
 KeywordSpec boundary_spc_set_keyword();
 KeywordSpec boundary_prescribed_motion_node_keyword();
 KeywordSpec boundary_prescribed_motion_set_keyword();
 KeywordSpec boundary_prescribed_motion_rigid_keyword();
+KeywordSpec boundary_temperature_node_keyword();
+KeywordSpec boundary_temperature_set_keyword();
 KeywordSpec initial_velocity_generation_keyword();
+KeywordSpec initial_temperature_node_keyword();
+KeywordSpec initial_temperature_set_keyword();
 KeywordSpec load_node_point_keyword();
 KeywordSpec load_node_set_keyword();
 KeywordSpec load_rigid_body_keyword();
@@ -51,10 +60,12 @@ KeywordSpec control_timestep_keyword();
 KeywordSpec control_energy_keyword();
 KeywordSpec control_hourglass_keyword();
 KeywordSpec control_shell_keyword();
+KeywordSpec control_contact_keyword();
 KeywordSpec control_units_keyword();
 KeywordSpec database_binary_d3plot_keyword();
 KeywordSpec database_glstat_keyword();
 KeywordSpec database_nodout_keyword();
+KeywordSpec database_rcforc_keyword();
 KeywordSpec database_history_node_keyword();
 
 std::span<const KeywordSpec> keyword_registry() {
@@ -89,12 +100,21 @@ std::span<const KeywordSpec> keyword_registry() {
       hourglass_keyword(),
       set_node_list_keyword(),
       set_part_list_keyword(),
+      set_segment_keyword(),
+      contact_one_way_surface_to_surface_keyword(),
+      contact_surface_to_surface_keyword(),
+      contact_forming_one_way_surface_to_surface_keyword(),
+      contact_automatic_surface_to_surface_keyword(),
       boundary_spc_node_keyword(),
       boundary_spc_set_keyword(),
       boundary_prescribed_motion_node_keyword(),
       boundary_prescribed_motion_set_keyword(),
       boundary_prescribed_motion_rigid_keyword(),
+      boundary_temperature_node_keyword(),
+      boundary_temperature_set_keyword(),
       initial_velocity_generation_keyword(),
+      initial_temperature_node_keyword(),
+      initial_temperature_set_keyword(),
       load_node_point_keyword(),
       load_node_set_keyword(),
       load_rigid_body_keyword(),
@@ -103,10 +123,12 @@ std::span<const KeywordSpec> keyword_registry() {
       control_energy_keyword(),
       control_hourglass_keyword(),
       control_shell_keyword(),
+      control_contact_keyword(),
       control_units_keyword(),
       database_binary_d3plot_keyword(),
       database_glstat_keyword(),
       database_nodout_keyword(),
+      database_rcforc_keyword(),
       database_history_node_keyword(),
   };
   return kRegistry;

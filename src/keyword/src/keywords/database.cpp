@@ -1,4 +1,5 @@
-// *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_HISTORY_NODE(_ID).
+// *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_RCFORC,
+// *DATABASE_HISTORY_NODE(_ID).
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -88,7 +89,7 @@ void read_d3plot(KeywordInput& in) {
   in.model().d3plot = d;
 }
 
-// --- *DATABASE_GLSTAT, *DATABASE_NODOUT
+// --- *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_RCFORC
 constexpr std::array kAsciiFields{
     FieldSpec{.name = "DT",
               .type = FieldType::kReal,
@@ -226,6 +227,14 @@ KeywordSpec database_nodout_keyword() {
           .summary =
               "The interval of nodout.csv (the *DATABASE_HISTORY_NODE nodes). LS-DYNA's "
               "further fields (DTHF, BINHF) are not read."};
+}
+
+KeywordSpec database_rcforc_keyword() {
+  return {.name = "DATABASE_RCFORC",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "RCFORC"); },
+          .cards = kAsciiCards,
+          .summary = "The interval of rcforc.csv (the resultant force of each contact)."};
 }
 
 KeywordSpec database_history_node_keyword() {

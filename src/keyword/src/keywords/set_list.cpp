@@ -1,4 +1,4 @@
-// *SET_NODE_LIST(_TITLE) and *SET_PART_LIST(_TITLE).
+// *SET_NODE_LIST(_TITLE), *SET_PART_LIST(_TITLE) and *SET_SEGMENT(_TITLE).
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -62,7 +62,32 @@ constexpr std::array kPartCards{
              .numbering = FieldNumbering::kSequential},
 };
 
-model::SetListDesc read_set(KeywordInput& in, std::span<const CardSpec> cards) {
+constexpr FieldSpec segment_node(std::string_view name, bool required) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .min_value = required ? 1 : 0,
+                   .unit = "-",
+                   .description = required ? "node id" : "node id (blank, 0 or N3: a triangle)",
+                   .required = required};
+}
+constexpr FieldSpec segment_attribute(std::string_view name) {
+  return FieldSpec{.name = name, .type = FieldType::kReal, .description = "attribute; ignored"};
+}
+constexpr std::array kSegmentFields{
+    segment_node("N1", true),  segment_node("N2", true), segment_node("N3", true),
+    segment_node("N4", false), segment_attribute("A1"),  segment_attribute("A2"),
+    segment_attribute("A3"),   segment_attribute("A4"),
+};
+constexpr std::array kSegmentCards{
+    CardSpec{.title = "Title card", .fields = kTitleCardFields, .presence = "with _TITLE only"},
+    CardSpec{.title = "Card 1", .fields = kCard1Fields, .presence = "required"},
+    CardSpec{.title = "Segment cards",
+             .fields = kSegmentFields,
+             .presence = "one segment per card, until the next keyword"},
+};
+
+/// The title card of _TITLE and card 1 (SID DA1..DA4 SOLVER; MECH only) of every set.
+model::SetListDesc read_set_header(KeywordInput& in, std::span<const CardSpec> cards) {
   model::SetListDesc set;
   if (in.option() == "TITLE") {
     set.title = in.next_card(cards[0], "title card").text("TITLE");
@@ -85,6 +110,11 @@ model::SetListDesc read_set(KeywordInput& in, std::span<const CardSpec> cards) {
                         "only",
                         set.solver));
   }
+  return set;
+}
+
+model::SetListDesc read_set(KeywordInput& in, std::span<const CardSpec> cards) {
+  model::SetListDesc set = read_set_header(in, cards);
   int card = 0;
   while (const auto ids = in.next_nonblank_line()) {
     const CardValues values = in.read(cards[2], *ids, card);
@@ -108,6 +138,22 @@ void read_set_part_list(KeywordInput& in) {
   in.model().part_sets.push_back(read_set(in, kPartCards));
 }
 
+void read_set_segment(KeywordInput& in) {
+  const model::SetListDesc header = read_set_header(in, kSegmentCards);
+  model::SetSegmentDesc set;
+  set.id = header.id;
+  set.title = header.title;
+  set.where = header.where;
+  while (const auto line = in.next_nonblank_line()) {
+    const CardValues v = in.read(kSegmentCards[2], *line);
+    const int n3 = v.integer("N3");
+    const int n4 = v.integer("N4");
+    set.segments.push_back({v.integer("N1"), v.integer("N2"), n3, n4 == 0 ? n3 : n4});
+    set.segments_where.push_back(in.where(line->line));
+  }
+  in.model().segment_sets.push_back(std::move(set));
+}
+
 }  // namespace
 
 KeywordSpec set_node_list_keyword() {
@@ -126,6 +172,17 @@ KeywordSpec set_part_list_keyword() {
           .handler = read_set_part_list,
           .cards = kPartCards,
           .summary = "A set of parts listed by id (zeros and blanks are skipped)."};
+}
+
+KeywordSpec set_segment_keyword() {
+  return {.name = "SET_SEGMENT",
+          .options = kNoneOrTitle,
+          .handler = read_set_segment,
+          .cards = kSegmentCards,
+          .summary =
+              "A set of segments (quadrilaterals, or triangles with N4 blank, 0 or N3) given by "
+              "node ids, for the sides of a contact. The attributes A1..A4 are ignored; the "
+              "_GENERATE, _ADD and other forms are not supported."};
 }
 
 }  // namespace plyform::keyword

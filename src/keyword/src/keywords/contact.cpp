@@ -1,0 +1,366 @@
+// *CONTACT_ONE_WAY_SURFACE_TO_SURFACE, *CONTACT_SURFACE_TO_SURFACE,
+// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE and *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, each
+// with _ID or _TITLE (the ID card first). Cards 1-3 and optional card A, as LS-DYNA lays them
+// out; cards 2, 3 and A may be left out at the end of the keyword (defaults). Fields plyform does
+// not implement must keep their defaults: each other value is an error naming the field.
+
+#include <array>
+
+#include "../keyword_registry.hpp"
+#include "common_cards.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+constexpr std::array<std::string_view, 3> kContactOptions{"", "ID", "TITLE"};
+
+constexpr std::array kSlaveTypes{0, 2, 3, 4};
+constexpr std::array kMasterTypes{0, 2, 3};
+constexpr std::array kPrintFlags{0, 1, 2};
+constexpr std::array kSofts{0, 1};
+constexpr std::array kSegmentOptions{0, 2};
+constexpr std::array kFrcfrqs{0, 1};
+
+constexpr std::array kIdFields{
+    FieldSpec{.name = "CID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "contact id (*USER_INTERFACE_FRICTION's NOSID names it); unique "
+                             "when not 0"},
+    FieldSpec{.name = "HEADING",
+              .type = FieldType::kText,
+              .width = 70,
+              .description = "a name for the contact",
+              .rest_of_line = true},
+};
+
+constexpr std::array kCard1{
+    FieldSpec{.name = "SSID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "slave side: a segment set, part set, part or node set id (SSTYP); "
+                             "0 (all) is an error"},
+    FieldSpec{.name = "MSID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "master side: a segment set, part set or part id (MSTYP); 0 (all) "
+                             "is an error"},
+    FieldSpec{.name = "SSTYP",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "what SSID is: 0 segment set, 2 part set, 3 part, 4 node set",
+              .allowed = kSlaveTypes,
+              .allowed_note = "shell element sets (1), all parts (5), exclusions (6) and the "
+                              "other codes are not supported"},
+    FieldSpec{.name = "MSTYP",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "what MSID is: 0 segment set, 2 part set, 3 part",
+              .allowed = kMasterTypes,
+              .allowed_note = "shell element sets (1), all parts (5), exclusions (6) and the "
+                              "other codes are not supported"},
+    FieldSpec{.name = "SBOXID",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "box of the slave side: must be 0 (boxes are not supported yet)"},
+    FieldSpec{.name = "MBOXID",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "box of the master side: must be 0 (boxes are not supported yet)"},
+    FieldSpec{.name = "SPR",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "slave side in LS-DYNA's interface force file (0-2); kept as "
+                             "written",
+              .allowed = kPrintFlags},
+    FieldSpec{.name = "MPR",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "master side in LS-DYNA's interface force file (0-2); kept as "
+                             "written",
+              .allowed = kPrintFlags},
+};
+
+constexpr std::array kCard2{
+    FieldSpec{.name = "FS",
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "static friction coefficient (the *PART_CONTACT and table forms, "
+                             "FS < 0, are not supported)"},
+    FieldSpec{
+        .name = "FD", .min_value = 0.0, .unit = "-", .description = "dynamic friction coefficient"},
+    FieldSpec{.name = "DC",
+              .min_value = 0.0,
+              .unit = "time/length",
+              .description = "exponential decay coefficient from static to dynamic friction"},
+    FieldSpec{.name = "VC",
+              .min_value = 0.0,
+              .unit = "stress",
+              .description = "viscous friction limit (0: none)"},
+    FieldSpec{.name = "VDC",
+              .min_value = 0.0,
+              .max_value = 100.0,
+              .unit = "-",
+              .description = "normal viscous damping, percent of critical"},
+    FieldSpec{.name = "PENCHK",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "small penetration check: must be 0 (not supported yet)"},
+    FieldSpec{.name = "BT", .min_value = 0.0, .unit = "time", .description = "birth time"},
+    FieldSpec{.name = "DT",
+              .default_value = 1e20,
+              .min_value = 0.0,
+              .unit = "time",
+              .description = "death time (0 is read as 1e20)"},
+};
+
+constexpr std::array kCard3{
+    FieldSpec{.name = "SFS",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "slave penalty scale factor (0 is read as 1)"},
+    FieldSpec{.name = "SFM",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "master penalty scale factor (0 is read as 1)"},
+    FieldSpec{.name = "SST",
+              .min_value = 0.0,
+              .unit = "length",
+              .description = "slave contact thickness (0: the shell thickness)"},
+    FieldSpec{.name = "MST",
+              .min_value = 0.0,
+              .unit = "length",
+              .description = "master contact thickness (0: the shell thickness)"},
+    FieldSpec{.name = "SFST",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the slave thickness (0 is read as 1)"},
+    FieldSpec{.name = "SFMT",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the master thickness (0 is read as 1)"},
+    FieldSpec{.name = "FSF",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the friction coefficients (0 is read as 1)"},
+    FieldSpec{.name = "VSF",
+              .default_value = 1.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the viscous friction (0 is read as 1)"},
+};
+
+constexpr std::array kCardA{
+    FieldSpec{.name = "SOFT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "penalty stiffness: 0 from the material, 1 also from the nodal "
+                             "masses and the time step (soft constraint)",
+              .allowed = kSofts,
+              .allowed_note = "segment-based contact (SOFT = 2) and the other options are not "
+                              "supported"},
+    FieldSpec{.name = "SOFSCL",
+              .default_value = 0.1,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "scale factor of the SOFT = 1 stiffness (0 is read as 0.1)"},
+    FieldSpec{.name = "LCIDAB",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "airbag curve: must be 0 (not supported)"},
+    FieldSpec{.name = "MAXPAR",
+              .default_value = 1.025,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "parametric extension of a master segment in the projection (0 is "
+                             "read as 1.025)"},
+    FieldSpec{.name = "SBOPT",
+              .unit = "-",
+              .description = "segment-based contact option (SOFT = 2 only): blank, 0 or 2 "
+                             "(LS-DYNA's default)",
+              .allowed = kSegmentOptions,
+              .allowed_note = "SBOPT applies to segment-based contact (SOFT = 2), which plyform "
+                              "does not support"},
+    FieldSpec{.name = "DEPTH",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "segment-based search depth (SOFT = 2 only): blank, 0 or 2 "
+                             "(LS-DYNA's default)",
+              .allowed = kSegmentOptions,
+              .allowed_note = "DEPTH applies to segment-based contact (SOFT = 2), which plyform "
+                              "does not support"},
+    FieldSpec{.name = "BSORT",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "cycles between bucket sorts (0: automatic)"},
+    FieldSpec{.name = "FRCFRQ",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "cycles between contact force updates: 0 or 1 (every cycle)",
+              .allowed = kFrcfrqs,
+              .allowed_note = "contact forces are updated every cycle"},
+};
+
+constexpr std::array kCards{
+    CardSpec{.title = "ID card", .fields = kIdFields, .presence = "with _ID or _TITLE only"},
+    CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
+    CardSpec{.title = "Card 2",
+             .fields = kCard2,
+             .presence = "optional at the end of the keyword (defaults)"},
+    CardSpec{.title = "Card 3",
+             .fields = kCard3,
+             .presence = "optional at the end of the keyword (defaults)"},
+    CardSpec{.title = "Optional card A",
+             .fields = kCardA,
+             .presence = "optional; cards B and after are not supported"},
+};
+
+/// A written 0 (or blank) means LS-DYNA's default for these fields.
+double zero_means(double value, double fallback) {
+  return value == 0.0 ? fallback : value;
+}
+
+void read_contact(KeywordInput& in, model::ContactKind kind) {
+  model::ContactDesc c;
+  c.kind = kind;
+  c.keyword = in.keyword().display();
+  c.where = in.keyword_where();
+  if (in.option() == "ID" || in.option() == "TITLE") {
+    const CardValues id = in.next_card(kCards[0], "ID card (CID HEADING)");
+    c.id = id.integer("CID");
+    c.heading = id.text("HEADING");
+  }
+  const auto line1 = in.next_line();
+  if (!line1) {
+    in.fail(in.keyword().line, "", "missing card 1 (SSID MSID SSTYP MSTYP ...)");
+  }
+  const CardValues c1 = in.read(kCards[1], *line1);
+  c.card1 = in.where(line1->line);
+  c.ssid = c1.integer("SSID");
+  c.msid = c1.integer("MSID");
+  c.sstyp = static_cast<model::ContactSideType>(c1.integer("SSTYP"));
+  c.mstyp = static_cast<model::ContactSideType>(c1.integer("MSTYP"));
+  c.spr = c1.integer("SPR");
+  c.mpr = c1.integer("MPR");
+  require_zero(in, line1->line, "SBOXID", c1.integer("SBOXID"), "a box of the slave side");
+  require_zero(in, line1->line, "MBOXID", c1.integer("MBOXID"), "a box of the master side");
+
+  if (const auto line2 = in.next_line()) {
+    const CardValues c2 = in.read(kCards[2], *line2);
+    c.fs = c2.real("FS");
+    c.fd = c2.real("FD");
+    c.dc = c2.real("DC");
+    c.vc = c2.real("VC");
+    c.vdc = c2.real("VDC");
+    c.birth = c2.real("BT");
+    c.death = zero_means(c2.real("DT"), 1e20);
+    require_zero(in, line2->line, "PENCHK", c2.integer("PENCHK"), "the small penetration check");
+    if (c.death <= c.birth) {
+      in.fail(line2->line, "DT", fmt::format("DT = {} is not after BT = {}", c.death, c.birth));
+    }
+  }
+  if (const auto line3 = in.next_line()) {
+    const CardValues c3 = in.read(kCards[3], *line3);
+    c.sfs = zero_means(c3.real("SFS"), 1.0);
+    c.sfm = zero_means(c3.real("SFM"), 1.0);
+    c.sst = c3.real("SST");
+    c.mst = c3.real("MST");
+    c.sfst = zero_means(c3.real("SFST"), 1.0);
+    c.sfmt = zero_means(c3.real("SFMT"), 1.0);
+    c.fsf = zero_means(c3.real("FSF"), 1.0);
+    c.vsf = zero_means(c3.real("VSF"), 1.0);
+  }
+  if (const auto line_a = in.next_line()) {
+    const CardValues a = in.read(kCards[4], *line_a);
+    c.soft = a.integer("SOFT");
+    c.sofscl = zero_means(a.real("SOFSCL"), 0.1);
+    c.maxpar = zero_means(a.real("MAXPAR"), 1.025);
+    c.bsort = a.integer("BSORT");
+    require_zero(in, line_a->line, "LCIDAB", a.integer("LCIDAB"), "an airbag curve");
+  }
+  if (has_more_cards(in)) {
+    const auto extra = in.next_nonblank_line();
+    in.fail(extra->line, "",
+            "optional cards B.. (PENMAX THKOPT ...) are not supported; end the keyword after "
+            "optional card A");
+  }
+  in.model().contacts.push_back(std::move(c));
+}
+
+}  // namespace
+
+KeywordSpec contact_one_way_surface_to_surface_keyword() {
+  return {.name = "CONTACT_ONE_WAY_SURFACE_TO_SURFACE",
+          .options = kContactOptions,
+          .handler =
+              [](KeywordInput& in) {
+                read_contact(in, model::ContactKind::one_way_surface_to_surface);
+              },
+          .cards = kCards,
+          .summary =
+              "Penalty contact of the slave nodes against the master segments (one way)."
+              " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
+              "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an "
+              "error. Cards 2, 3 and optional card A may be left out at the end; optional cards B "
+              "and after, boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+}
+
+KeywordSpec contact_surface_to_surface_keyword() {
+  return {
+      .name = "CONTACT_SURFACE_TO_SURFACE",
+      .options = kContactOptions,
+      .handler = [](KeywordInput& in) { read_contact(in, model::ContactKind::surface_to_surface); },
+      .cards = kCards,
+      .summary =
+          "Penalty contact both ways: slave nodes against master segments and master "
+          "nodes against slave segments."
+          " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
+          "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an error. "
+          "Cards 2, 3 and optional card A may be left out at the end; optional cards B and after, "
+          "boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+}
+
+KeywordSpec contact_forming_one_way_surface_to_surface_keyword() {
+  return {.name = "CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE",
+          .options = kContactOptions,
+          .handler =
+              [](KeywordInput& in) {
+                read_contact(in, model::ContactKind::forming_one_way_surface_to_surface);
+              },
+          .cards = kCards,
+          .summary =
+              "One-way penalty contact of a sheet (slave) against a forming tool "
+              "(master)."
+              " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
+              "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an "
+              "error. Cards 2, 3 and optional card A may be left out at the end; optional cards B "
+              "and after, boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+}
+
+KeywordSpec contact_automatic_surface_to_surface_keyword() {
+  return {.name = "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
+          .options = kContactOptions,
+          .handler =
+              [](KeywordInput& in) {
+                read_contact(in, model::ContactKind::automatic_surface_to_surface);
+              },
+          .cards = kCards,
+          .summary =
+              "Penalty contact both ways (LS-DYNA's automatic contact), with the cards "
+              "and rules of *CONTACT_SURFACE_TO_SURFACE. SSID/MSID name the slave and "
+              "master sides by SSTYP/MSTYP: 0 segment set (*SET_SEGMENT), 2 part set, 3 "
+              "part, 4 node set (slave side only); 0 (all) is an error. Cards 2, 3 and "
+              "optional card A may be left out at the end; optional cards B and after, "
+              "boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+}
+
+}  // namespace plyform::keyword

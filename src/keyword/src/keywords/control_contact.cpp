@@ -1,0 +1,269 @@
+// *CONTROL_CONTACT: the defaults of every contact (penalty scale, stiffness option, shell
+// thickness, bucket sort interval, default friction). Cards 2-4 are optional. A field that
+// plyform's contacts (penalty, node to segment, surface to surface, no rigid walls, spot welds,
+// single-surface, eroding or tied contacts, user routines) do not use is read and ignored when
+// no value of it changes them; any other field must keep LS-DYNA's default, else an error names
+// it. Cards 5 and after are errors.
+
+#include <array>
+
+#include "../keyword_registry.hpp"
+#include "common_cards.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+constexpr std::array kZeroOnly{0};
+constexpr std::array kZeroOne{0, 1};
+constexpr std::array kZeroToTwo{0, 1, 2};
+constexpr std::array kZeroToThree{0, 1, 2, 3};
+constexpr std::array kZeroToFour{0, 1, 2, 3, 4};
+constexpr std::array kPenopts{0, 1, 2, 3};
+
+constexpr std::array kCard1{
+    FieldSpec{.name = "SLSFAC",
+              .default_value = 0.1,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "penalty scale factor of every contact (0 is read as 0.1)"},
+    FieldSpec{.name = "RWPNAL",
+              .unit = "-",
+              .description = "rigid wall penalty; read and ignored (plyform has no rigid walls)"},
+    FieldSpec{.name = "ISLCHK",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "LS-DYNA's initial penetration check report (0-2); read and ignored",
+              .allowed = kZeroToTwo},
+    FieldSpec{.name = "SHLTHK",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "shell thickness in the contacts: 0 not considered, 1 considered "
+                             "except for rigid bodies, 2 considered also for rigid bodies",
+              .allowed = kZeroToTwo},
+    FieldSpec{.name = "PENOPT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "penalty stiffness: 1 (or 0) the smaller of slave and master, 2 the "
+                             "master segment's, 3 the slave node's",
+              .allowed = kPenopts,
+              .allowed_note = "the area- or mass-weighted slave stiffness (PENOPT 4 and 5) is "
+                              "not supported"},
+    FieldSpec{.name = "THKCHG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "shell thickness changes in contact: must be 0",
+              .allowed = kZeroOnly,
+              .allowed_note = "thickness changes of shells in contact are not supported yet"},
+    FieldSpec{.name = "ORIEN",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "LS-DYNA's automatic reorientation of segments at the start (0-4); "
+                             "read and ignored (plyform does not reorient segments)",
+              .allowed = kZeroToFour},
+    FieldSpec{.name = "ENMASS",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "eroded nodes in contact (0-2); read and ignored (no erosion)",
+              .allowed = kZeroToTwo},
+};
+
+constexpr std::array kCard2{
+    FieldSpec{.name = "USRSTR",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "storage of a user interface control routine; read and ignored"},
+    FieldSpec{.name = "USRFRC",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "storage of a user friction routine; read and ignored (plyform "
+                             "sizes the history of *USER_INTERFACE_FRICTION itself)"},
+    FieldSpec{.name = "NSBCS",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "cycles between bucket sorts (0: automatic)"},
+    FieldSpec{.name = "INTERM",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "intermittent searching: must be 0",
+              .allowed = kZeroOnly,
+              .allowed_note = "intermittent contact searching is not supported"},
+    FieldSpec{.name = "XPENE",
+              .default_value = 4.0,
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "penetration check multiplier of PENCHK; read and ignored (PENCHK "
+                             "must be 0)"},
+    FieldSpec{.name = "SSTHK",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "shell thickness in single-surface contacts (0, 1); read and "
+                             "ignored",
+              .allowed = kZeroOne},
+    FieldSpec{.name = "ECDT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "time step of eroding contacts (0, 1); read and ignored",
+              .allowed = kZeroOne},
+    FieldSpec{.name = "TIEDPRJ",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "projection in tied contacts (0, 1); read and ignored",
+              .allowed = kZeroOne},
+};
+
+constexpr std::array kCard3{
+    FieldSpec{.name = "SFRIC",
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "default static friction coefficient"},
+    FieldSpec{.name = "DFRIC",
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "default dynamic friction coefficient"},
+    FieldSpec{.name = "EDC",
+              .min_value = 0.0,
+              .unit = "time/length",
+              .description = "default exponential decay coefficient"},
+    FieldSpec{.name = "VFC",
+              .min_value = 0.0,
+              .unit = "stress",
+              .description = "default viscous friction limit"},
+    FieldSpec{.name = "TH",
+              .unit = "length",
+              .description = "default contact thickness of *PART_CONTACT: must be 0 (not "
+                             "supported)"},
+    FieldSpec{.name = "TH_SF",
+              .unit = "-",
+              .description = "default thickness scale factor of *PART_CONTACT: must be 0 (not "
+                             "supported)"},
+    FieldSpec{.name = "PEN_SF",
+              .unit = "-",
+              .description = "default penalty scale factor of *PART_CONTACT: must be 0 (not "
+                             "supported)"},
+    FieldSpec{.name = "PTSCL",
+              .default_value = 1.0,
+              .unit = "-",
+              .description = "contact stress scale on thick shell formulations: blank, 0 or 1"},
+};
+
+constexpr std::array kCard4{
+    FieldSpec{.name = "IGNORE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "initial penetrations: must be 0",
+              .allowed = kZeroOnly,
+              .allowed_note = "tracking initial penetrations (IGNORE 1, 2) is not supported yet"},
+    FieldSpec{.name = "FRCENG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "frictional energy (0, 1); read and ignored: plyform always adds "
+                             "the contact energy to glstat.csv",
+              .allowed = kZeroOne},
+    FieldSpec{.name = "SKIPRWG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "display of rigid walls (0, 1); read and ignored",
+              .allowed = kZeroOne},
+    FieldSpec{.name = "OUTSEG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "spot weld output (0, 1); read and ignored",
+              .allowed = kZeroOne},
+    FieldSpec{.name = "SPOTSTP",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "spot weld search failure (0-3); read and ignored (no spot welds)",
+              .allowed = kZeroToThree},
+    FieldSpec{.name = "SPOTDEL",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "spot weld deletion; read and ignored (no spot welds)"},
+    FieldSpec{.name = "SPOTHIN",
+              .min_value = 0.0,
+              .unit = "-",
+              .description = "thickness scale near spot welds; read and ignored (no spot welds)"},
+    FieldSpec{.name = "DIR_TIE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "directional tie of tied contacts; read and ignored"},
+};
+
+constexpr std::array kCards{
+    CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
+    CardSpec{.title = "Card 2", .fields = kCard2, .presence = "optional"},
+    CardSpec{.title = "Card 3", .fields = kCard3, .presence = "optional"},
+    CardSpec{.title = "Card 4",
+             .fields = kCard4,
+             .presence = "optional; cards 5 and after are "
+                         "not supported"},
+};
+
+void read_control_contact(KeywordInput& in) {
+  model::ControlContactDesc desc;
+  const auto line1 = in.next_line();
+  if (!line1) {
+    in.fail(in.keyword().line, "", "missing card 1 (SLSFAC RWPNAL ISLCHK SHLTHK PENOPT ...)");
+  }
+  const CardValues c1 = in.read(kCards[0], *line1);
+  desc.where = in.where(line1->line);
+  desc.slsfac = c1.real("SLSFAC") == 0.0 ? 0.1 : c1.real("SLSFAC");
+  desc.shlthk = c1.integer("SHLTHK");
+  desc.penopt = c1.integer("PENOPT") == 0 ? 1 : c1.integer("PENOPT");
+  if (const auto line2 = in.next_line()) {
+    const CardValues c2 = in.read(kCards[1], *line2);
+    desc.nsbcs = c2.integer("NSBCS");
+  }
+  if (const auto line3 = in.next_line()) {
+    const CardValues c3 = in.read(kCards[2], *line3);
+    desc.sfric = c3.real("SFRIC");
+    desc.dfric = c3.real("DFRIC");
+    desc.edc = c3.real("EDC");
+    desc.vfc = c3.real("VFC");
+    for (std::string_view name : {"TH", "TH_SF", "PEN_SF"}) {
+      require_zero(in, line3->line, name, c3.real(name), "a default of *PART_CONTACT");
+    }
+    if (const double ptscl = c3.real("PTSCL"); ptscl != 0.0 && ptscl != 1.0) {
+      in.fail(line3->line, "PTSCL",
+              fmt::format("PTSCL = {} (a contact stress scale on thick shells) is not supported; "
+                          "leave it blank, 0 or 1",
+                          ptscl));
+    }
+  }
+  if (const auto line4 = in.next_line()) {
+    in.read(kCards[3], *line4);
+  }
+  if (has_more_cards(in)) {
+    const auto extra = in.next_nonblank_line();
+    in.fail(extra->line, "",
+            "cards 5 and after of *CONTROL_CONTACT (ISYM, NSEROD, RWGAPS, ...) are not "
+            "supported; end the keyword after card 4");
+  }
+  if (in.model().control_contact) {
+    in.warn(in.keyword().line, "",
+            fmt::format("*CONTROL_CONTACT given again: this one replaces the one at {}:{}",
+                        in.model().control_contact->where.file,
+                        in.model().control_contact->where.line));
+  }
+  in.model().control_contact = desc;
+}
+
+}  // namespace
+
+KeywordSpec control_contact_keyword() {
+  return {.name = "CONTROL_CONTACT",
+          .options = kNoOptions,
+          .handler = read_control_contact,
+          .cards = kCards,
+          .summary =
+              "Defaults of every contact: SLSFAC, PENOPT (1-3), SHLTHK, NSBCS and the default "
+              "friction of card 3. Fields about rigid walls, spot welds, erosion, tied or "
+              "single-surface contacts and user routines are read and ignored; THKCHG, INTERM, "
+              "TH, TH_SF, PEN_SF and IGNORE must keep their defaults. Given twice, the last one "
+              "is used (with a warning)."};
+}
+
+}  // namespace plyform::keyword

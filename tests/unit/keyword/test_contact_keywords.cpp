@@ -1,0 +1,387 @@
+// The contact keywords and the temperatures: *CONTACT_..._SURFACE_TO_SURFACE(_ID), *SET_SEGMENT,
+// *CONTROL_CONTACT, *DATABASE_RCFORC, *INITIAL_TEMPERATURE_NODE/_SET and
+// *BOUNDARY_TEMPERATURE_NODE/_SET. Fixed and free format, defaults, and every error with its
+// file, line, keyword and field.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "plyform/keyword/read_deck.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+using model::ContactKind;
+using model::ContactSideType;
+
+std::string all_errors(const ReadResult& result) {
+  std::string out;
+  for (const Diagnostic& d : result.errors) {
+    out += d.to_string() + "\n";
+  }
+  return out;
+}
+
+ReadResult read_ok(std::string_view text) {
+  ReadResult result = read_deck_text(text, "deck.k");
+  EXPECT_TRUE(result.ok()) << all_errors(result);
+  return result;
+}
+
+/// Expects one error at `line` on `field` of `keyword` whose message contains `part`.
+void expect_error(std::string_view deck, int line, std::string_view keyword, std::string_view field,
+                  std::string_view part) {
+  SCOPED_TRACE(std::string(deck));
+  const ReadResult result = read_deck_text(deck, "deck.k");
+  ASSERT_EQ(result.errors.size(), 1u) << all_errors(result);
+  const Diagnostic& d = result.errors.front();
+  EXPECT_EQ(d.where.file, "deck.k");
+  EXPECT_EQ(d.where.line, line);
+  EXPECT_EQ(d.keyword, keyword);
+  EXPECT_EQ(d.field, field);
+  EXPECT_NE(d.message.find(part), std::string::npos) << d.to_string();
+}
+
+// --- *CONTACT_
+
+TEST(Contact, FixedFormatWithIdAndEveryCard) {
+  const ReadResult r = read_ok(
+      "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n"
+      "$#     cid                                                                 title\n"
+      "        12blank to die\n"
+      "$#    ssid      msid     sstyp     mstyp    sboxid    mboxid       spr       mpr\n"
+      "         1         2         3         2         0         0         1         2\n"
+      "$#      fs        fd        dc        vc       vdc    penchk        bt        dt\n"
+      "     0.125      0.09       2.5      10.0      20.0         0       0.1       5.0\n"
+      "$#     sfs       sfm       sst       mst      sfst      sfmt       fsf       vsf\n"
+      "       2.0       3.0      0.01      0.02       1.1       1.2       0.5       0.6\n"
+      "$#    soft    sofscl    lcidab    maxpar     sbopt     depth     bsort    frcfrq\n"
+      "         1       0.2         0      1.05         2         2       100         1\n");
+  ASSERT_EQ(r.model.contacts.size(), 1u);
+  const model::ContactDesc& c = r.model.contacts[0];
+  EXPECT_EQ(c.kind, ContactKind::forming_one_way_surface_to_surface);
+  EXPECT_EQ(c.keyword, "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID");
+  EXPECT_EQ(c.id, 12);
+  EXPECT_EQ(c.heading, "blank to die");
+  EXPECT_EQ(c.ssid, 1);
+  EXPECT_EQ(c.msid, 2);
+  EXPECT_EQ(c.sstyp, ContactSideType::part);
+  EXPECT_EQ(c.mstyp, ContactSideType::part_set);
+  EXPECT_EQ(c.spr, 1);
+  EXPECT_EQ(c.mpr, 2);
+  EXPECT_DOUBLE_EQ(c.fs, 0.125);
+  EXPECT_DOUBLE_EQ(c.fd, 0.09);
+  EXPECT_DOUBLE_EQ(c.dc, 2.5);
+  EXPECT_DOUBLE_EQ(c.vc, 10.0);
+  EXPECT_DOUBLE_EQ(c.vdc, 20.0);
+  EXPECT_DOUBLE_EQ(c.birth, 0.1);
+  EXPECT_DOUBLE_EQ(c.death, 5.0);
+  EXPECT_DOUBLE_EQ(c.sfs, 2.0);
+  EXPECT_DOUBLE_EQ(c.sfm, 3.0);
+  EXPECT_DOUBLE_EQ(c.sst, 0.01);
+  EXPECT_DOUBLE_EQ(c.mst, 0.02);
+  EXPECT_DOUBLE_EQ(c.sfst, 1.1);
+  EXPECT_DOUBLE_EQ(c.sfmt, 1.2);
+  EXPECT_DOUBLE_EQ(c.fsf, 0.5);
+  EXPECT_DOUBLE_EQ(c.vsf, 0.6);
+  EXPECT_EQ(c.soft, 1);
+  EXPECT_DOUBLE_EQ(c.sofscl, 0.2);
+  EXPECT_DOUBLE_EQ(c.maxpar, 1.05);
+  EXPECT_EQ(c.bsort, 100);
+  EXPECT_EQ(c.where.line, 1);
+  EXPECT_EQ(c.card1.line, 5);
+  EXPECT_EQ(c.card1.file, "deck.k");
+}
+
+TEST(Contact, FreeFormatZerosAndOmittedCardsTakeLsDynaDefaults) {
+  const ReadResult r = read_ok(
+      "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n"
+      "5,6,0,0\n"
+      "*CONTACT_SURFACE_TO_SURFACE\n"
+      "5,6,4,3\n"
+      "0.2,0.1,0,0,0,0,0,0\n"
+      "0,0,0,0,0,0,0,0\n"
+      "0,0,0,0,0,0,0,0\n"
+      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TITLE\n"
+      "7,sheets\n"
+      "1,2,2,2\n"
+      "\n"
+      "\n"
+      "\n");
+  ASSERT_EQ(r.model.contacts.size(), 3u);
+  for (const model::ContactDesc& c : r.model.contacts) {
+    EXPECT_DOUBLE_EQ(c.death, 1e20);
+    EXPECT_DOUBLE_EQ(c.sfs, 1.0);
+    EXPECT_DOUBLE_EQ(c.sfm, 1.0);
+    EXPECT_DOUBLE_EQ(c.sfst, 1.0);
+    EXPECT_DOUBLE_EQ(c.sfmt, 1.0);
+    EXPECT_DOUBLE_EQ(c.fsf, 1.0);
+    EXPECT_DOUBLE_EQ(c.vsf, 1.0);
+    EXPECT_EQ(c.soft, 0);
+    EXPECT_DOUBLE_EQ(c.sofscl, 0.1);
+    EXPECT_DOUBLE_EQ(c.maxpar, 1.025);
+    EXPECT_EQ(c.bsort, 0);
+  }
+  const auto& c = r.model.contacts;
+  EXPECT_EQ(c[0].kind, ContactKind::one_way_surface_to_surface);
+  EXPECT_EQ(c[0].id, 0);
+  EXPECT_EQ(c[0].sstyp, ContactSideType::segment_set);
+  EXPECT_EQ(c[0].mstyp, ContactSideType::segment_set);
+  EXPECT_DOUBLE_EQ(c[0].fs, 0.0);
+  EXPECT_EQ(c[1].kind, ContactKind::surface_to_surface);
+  EXPECT_EQ(c[1].sstyp, ContactSideType::node_set);
+  EXPECT_EQ(c[1].mstyp, ContactSideType::part);
+  EXPECT_DOUBLE_EQ(c[1].fs, 0.2);
+  EXPECT_DOUBLE_EQ(c[1].fd, 0.1);
+  EXPECT_EQ(c[2].kind, ContactKind::automatic_surface_to_surface);
+  EXPECT_EQ(c[2].id, 7);
+  EXPECT_EQ(c[2].heading, "sheets");
+  EXPECT_EQ(c[2].card1.line, 10);
+}
+
+TEST(Contact, FieldsPlyformDoesNotImplementAreNamed) {
+  constexpr std::string_view kKw = "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE";
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,1,3\n", 2, kKw, "SSTYP",
+               "must be one of 0, 2, 3, 4; shell element sets (1)");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,5,3\n", 2, kKw, "SSTYP", "all parts (5)");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,4\n", 2, kKw, "MSTYP",
+               "must be one of 0, 2, 3");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,6\n", 2, kKw, "MSTYP", "exclusions");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3,4\n", 2, kKw, "SBOXID",
+               "not supported");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3,0,4\n", 2, kKw, "MBOXID",
+               "not supported");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n0,0,0,0,0,1\n", 3, kKw, "PENCHK",
+               "not supported");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n-0.1\n", 3, kKw, "FS", ">= 0");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n0,-0.1\n", 3, kKw, "FD", ">= 0");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n0,0,0,0,-5\n", 3, kKw, "VDC",
+               "out of range");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n0,0,0,0,0,0,2.0,1.0\n", 3, kKw, "DT",
+               "DT = 1 is not after BT = 2");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n-1\n", 4, kKw, "SFS", ">= 0");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n2\n", 5, kKw, "SOFT",
+               "segment-based contact (SOFT = 2)");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n0,0,5\n", 5, kKw, "LCIDAB",
+               "not supported");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n0,0,0,0,1.0\n", 5, kKw, "SBOPT",
+               "SOFT = 2");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n0,0,0,0,0,3\n", 5, kKw, "DEPTH",
+               "SOFT = 2");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n0,0,0,0,0,0,0,2\n", 5, kKw,
+               "FRCFRQ", "every cycle");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n0.0,0,0\n", 6, kKw, "",
+               "optional cards B.. (PENMAX THKOPT ...) are not supported");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_ID\n3\n", 1, "*CONTACT_SURFACE_TO_SURFACE_ID", "",
+               "missing card 1");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_ID\n-3\n1,2,3,3\n", 2, "*CONTACT_SURFACE_TO_SURFACE_ID",
+               "CID", ">= 0");
+}
+
+TEST(Contact, OtherContactOptionsAreUnsupportedKeywords) {
+  const ReadResult r =
+      read_deck_text("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_ID\n1\n1,2,3,3\n", "deck.k");
+  ASSERT_EQ(r.errors.size(), 1u) << all_errors(r);
+  EXPECT_EQ(r.errors[0].where.line, 1);
+  EXPECT_NE(r.errors[0].message.find("unsupported option _TIEBREAK_ID"), std::string::npos);
+}
+
+// --- *SET_SEGMENT
+
+TEST(SetSegment, QuadsTrianglesTitleAndFreeFormat) {
+  const ReadResult r = read_ok(
+      "*SET_SEGMENT\n"
+      "$#     sid       da1       da2       da3       da4    solver\n"
+      "         1     0.000     0.000     0.000     0.000      MECH\n"
+      "$#      n1        n2        n3        n4        a1        a2        a3        a4\n"
+      "      2842       626      3232      3242     0.000     0.000     0.000     0.000\n"
+      "        11        12        13\n"
+      "        21        22        23         0\n"
+      "*SET_SEGMENT_TITLE\n"
+      "upper face\n"
+      "4\n"
+      "1,2,3,4\n"
+      "5,6,7,7\n");
+  ASSERT_EQ(r.model.segment_sets.size(), 2u);
+  const model::SetSegmentDesc& s = r.model.segment_sets[0];
+  EXPECT_EQ(s.id, 1);
+  EXPECT_EQ(s.where.line, 3);
+  ASSERT_EQ(s.segments.size(), 3u);
+  EXPECT_EQ(s.segments[0], (std::array<int, 4>{2842, 626, 3232, 3242}));
+  EXPECT_EQ(s.segments[1], (std::array<int, 4>{11, 12, 13, 13}));  // N4 blank: a triangle
+  EXPECT_EQ(s.segments[2], (std::array<int, 4>{21, 22, 23, 23}));  // N4 0: a triangle
+  ASSERT_EQ(s.segments_where.size(), 3u);
+  EXPECT_EQ(s.segments_where[2].line, 7);
+  const model::SetSegmentDesc& t = r.model.segment_sets[1];
+  EXPECT_EQ(t.id, 4);
+  EXPECT_EQ(t.title, "upper face");
+  EXPECT_EQ(t.segments[0], (std::array<int, 4>{1, 2, 3, 4}));
+  EXPECT_EQ(t.segments[1], (std::array<int, 4>{5, 6, 7, 7}));
+}
+
+TEST(SetSegment, Errors) {
+  expect_error("*SET_SEGMENT\n1\n1,2\n", 3, "*SET_SEGMENT", "N3", "required");
+  expect_error("*SET_SEGMENT\n1\n1,2,3,-4\n", 3, "*SET_SEGMENT", "N4", ">= 0");
+  expect_error("*SET_SEGMENT\n1,0,0,0,0,THERMAL\n1,2,3\n", 2, "*SET_SEGMENT", "SOLVER",
+               "not supported");
+  expect_error("*SET_SEGMENT\n0\n1,2,3\n", 2, "*SET_SEGMENT", "SID", "");
+}
+
+// --- *CONTROL_CONTACT
+
+TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {
+  const ReadResult r = read_ok(
+      "*CONTROL_CONTACT\n"
+      "$#  slsfac    rwpnal    islchk    shlthk    penopt    thkchg     orien    enmass\n"
+      "      0.05       1.0         2         2         3         0         4         2\n"
+      "$#  usrstr    usrfrc     nsbcs    interm     xpene     ssthk      ecdt   tiedprj\n"
+      "         0        32        10         0       1.0         1         1         1\n"
+      "$#   sfric     dfric       edc       vfc        th     th_sf    pen_sf     ptscl\n"
+      "       0.2       0.1       3.0       5.0       0.0       0.0       0.0       1.0\n"
+      "$#  ignore    frceng   skiprwg    outseg   spotstp   spotdel   spothin   dir_tie\n"
+      "         0         1         1         1         2         1       0.1         1\n");
+  ASSERT_TRUE(r.model.control_contact.has_value());
+  const model::ControlContactDesc& c = *r.model.control_contact;
+  EXPECT_DOUBLE_EQ(c.slsfac, 0.05);
+  EXPECT_EQ(c.shlthk, 2);
+  EXPECT_EQ(c.penopt, 3);
+  EXPECT_EQ(c.nsbcs, 10);
+  EXPECT_DOUBLE_EQ(c.sfric, 0.2);
+  EXPECT_DOUBLE_EQ(c.dfric, 0.1);
+  EXPECT_DOUBLE_EQ(c.edc, 3.0);
+  EXPECT_DOUBLE_EQ(c.vfc, 5.0);
+  EXPECT_EQ(c.where.line, 3);
+
+  // Blank and 0: LS-DYNA's defaults (SLSFAC 0.1, PENOPT 1); cards 2-4 optional.
+  const ReadResult d = read_ok("*CONTROL_CONTACT\n0.0,0,0,0,0\n");
+  ASSERT_TRUE(d.model.control_contact.has_value());
+  EXPECT_DOUBLE_EQ(d.model.control_contact->slsfac, 0.1);
+  EXPECT_EQ(d.model.control_contact->penopt, 1);
+  EXPECT_EQ(d.model.control_contact->shlthk, 0);
+  EXPECT_EQ(d.model.control_contact->nsbcs, 0);
+  EXPECT_DOUBLE_EQ(d.model.control_contact->sfric, 0.0);
+}
+
+TEST(ControlContact, GivenTwiceTheLastWinsWithAWarning) {
+  const ReadResult r =
+      read_ok("*CONTROL_CONTACT\n0.2\n*CONTROL_CONTACT\n0.3,0,0,0,2\n*CONTROL_CONTACT\n\n");
+  ASSERT_TRUE(r.model.control_contact.has_value());
+  EXPECT_DOUBLE_EQ(r.model.control_contact->slsfac, 0.1);
+  EXPECT_EQ(r.model.control_contact->penopt, 1);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_EQ(r.warnings[0].where.line, 3);
+  EXPECT_EQ(r.warnings[0].keyword, "*CONTROL_CONTACT");
+  EXPECT_NE(r.warnings[0].message.find("replaces the one at deck.k:2"), std::string::npos);
+}
+
+TEST(ControlContact, FieldsPlyformDoesNotImplementAreNamed) {
+  constexpr std::string_view kKw = "*CONTROL_CONTACT";
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,4\n", 2, kKw, "PENOPT", "PENOPT 4 and 5");
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,5\n", 2, kKw, "PENOPT", "not supported");
+  expect_error("*CONTROL_CONTACT\n-0.1\n", 2, kKw, "SLSFAC", ">= 0");
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,3\n", 2, kKw, "SHLTHK", "must be one of 0, 1, 2");
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,0,1\n", 2, kKw, "THKCHG", "thickness changes");
+  expect_error("*CONTROL_CONTACT\n0.1\n0,0,0,1\n", 3, kKw, "INTERM", "intermittent");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,1.5\n", 4, kKw, "TH", "*PART_CONTACT");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,2\n", 4, kKw, "TH_SF", "*PART_CONTACT");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,3\n", 4, kKw, "PEN_SF", "*PART_CONTACT");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,0,2\n", 4, kKw, "PTSCL", "blank, 0 or 1");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n1\n", 5, kKw, "IGNORE", "initial penetrations");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n\n1\n", 6, kKw, "", "cards 5 and after");
+}
+
+// --- *DATABASE_RCFORC
+
+TEST(DatabaseRcforc, ReadsTheInterval) {
+  const ReadResult r = read_ok(
+      "*DATABASE_RCFORC\n"
+      "2.50000E-4         1         0         1\n"
+      "*DATABASE_GLSTAT\n1e-3\n");
+  ASSERT_EQ(r.model.ascii_outputs.size(), 2u);
+  EXPECT_EQ(r.model.ascii_outputs[0].name, "RCFORC");
+  EXPECT_DOUBLE_EQ(r.model.ascii_outputs[0].dt, 2.5e-4);
+  EXPECT_EQ(r.model.ascii_outputs[0].binary, 1);
+  EXPECT_EQ(r.model.ascii_outputs[0].where.line, 2);
+  EXPECT_EQ(r.model.ascii_outputs[1].name, "GLSTAT");
+  expect_error("*DATABASE_RCFORC\n1e-3,1,7\n", 2, "*DATABASE_RCFORC", "LCUR", "not supported");
+}
+
+// --- *INITIAL_TEMPERATURE_NODE / _SET
+
+TEST(InitialTemperature, NodesAndSets) {
+  const ReadResult r = read_ok(
+      "*INITIAL_TEMPERATURE_NODE\n"
+      "$#     nid      temp       loc\n"
+      "         1     293.0         0\n"
+      "2,300.5\n"
+      "*INITIAL_TEMPERATURE_SET\n"
+      "         4     450.0\n");
+  const auto& t = r.model.initial_temperatures;
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].target, model::NodeTarget::kNode);
+  EXPECT_EQ(t[0].target_id, 1);
+  EXPECT_DOUBLE_EQ(t[0].temperature, 293.0);
+  EXPECT_EQ(t[0].where.line, 3);
+  EXPECT_EQ(t[1].target_id, 2);
+  EXPECT_DOUBLE_EQ(t[1].temperature, 300.5);
+  EXPECT_EQ(t[1].loc, 0);
+  EXPECT_EQ(t[2].target, model::NodeTarget::kSet);
+  EXPECT_EQ(t[2].target_id, 4);
+  EXPECT_DOUBLE_EQ(t[2].temperature, 450.0);
+}
+
+TEST(InitialTemperature, Errors) {
+  expect_error("*INITIAL_TEMPERATURE_SET\n0,300.0\n", 2, "*INITIAL_TEMPERATURE_SET", "NSID",
+               "NSID = 0 (every node) is not supported");
+  expect_error("*INITIAL_TEMPERATURE_SET\n\n         0     300.0\n", 3, "*INITIAL_TEMPERATURE_SET",
+               "NSID", "every node");
+  expect_error("*INITIAL_TEMPERATURE_NODE\n1,300.0,1\n", 2, "*INITIAL_TEMPERATURE_NODE", "LOC",
+               "thermal shells");
+  expect_error("*INITIAL_TEMPERATURE_NODE\n,300.0\n", 2, "*INITIAL_TEMPERATURE_NODE", "NID",
+               "required");
+}
+
+// --- *BOUNDARY_TEMPERATURE_NODE / _SET
+
+TEST(BoundaryTemperature, NodesAndSetsWithDefaults) {
+  const ReadResult r = read_ok(
+      "*BOUNDARY_TEMPERATURE_SET\n"
+      "$#    nsid      lcid     cmult       loc    tdeath    tbirth\n"
+      "         6        11\n"
+      "         7         0     500.0         0       2.0       1.0\n"
+      "*BOUNDARY_TEMPERATURE_NODE\n"
+      "3,12,0.5,0,0,0.25\n");
+  const auto& t = r.model.temperature_histories;
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].target, model::NodeTarget::kSet);
+  EXPECT_EQ(t[0].target_id, 6);
+  EXPECT_EQ(t[0].curve_id, 11);
+  EXPECT_DOUBLE_EQ(t[0].cmult, 1.0);  // blank: 1
+  EXPECT_DOUBLE_EQ(t[0].death, 1e20);
+  EXPECT_DOUBLE_EQ(t[0].birth, 0.0);
+  EXPECT_EQ(t[0].where.line, 3);
+  EXPECT_EQ(t[1].curve_id, 0);
+  EXPECT_DOUBLE_EQ(t[1].cmult, 500.0);
+  EXPECT_DOUBLE_EQ(t[1].death, 2.0);
+  EXPECT_DOUBLE_EQ(t[1].birth, 1.0);
+  EXPECT_EQ(t[2].target, model::NodeTarget::kNode);
+  EXPECT_EQ(t[2].target_id, 3);
+  EXPECT_EQ(t[2].curve_id, 12);
+  EXPECT_DOUBLE_EQ(t[2].cmult, 0.5);
+  EXPECT_DOUBLE_EQ(t[2].death, 1e20);  // 0: 1e20
+  EXPECT_DOUBLE_EQ(t[2].birth, 0.25);
+}
+
+TEST(BoundaryTemperature, Errors) {
+  expect_error("*BOUNDARY_TEMPERATURE_SET\n6,11,1.0,1\n", 2, "*BOUNDARY_TEMPERATURE_SET", "LOC",
+               "thermal shells");
+  expect_error("*BOUNDARY_TEMPERATURE_SET\n,0,1.0\n", 2, "*BOUNDARY_TEMPERATURE_SET", "NSID",
+               "required");
+  expect_error("*BOUNDARY_TEMPERATURE_NODE\n1,-2\n", 2, "*BOUNDARY_TEMPERATURE_NODE", "LCID",
+               ">= 0");
+  expect_error("*BOUNDARY_TEMPERATURE_NODE\n1,2,1.0,0,1.0,3.0\n", 2, "*BOUNDARY_TEMPERATURE_NODE",
+               "TDEATH", "TDEATH = 1 is not after TBIRTH = 3");
+}
+
+}  // namespace
+}  // namespace plyform::keyword
