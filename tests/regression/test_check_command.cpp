@@ -117,6 +117,79 @@ TEST(CheckCommand, MissingDeckIsAnError) {
   EXPECT_NE(r.err.find("deck.k"), std::string::npos);
 }
 
+// Two shell plates and the contacts between them: one line per contact with its id, keyword,
+// sides and, when a *USER_INTERFACE_FRICTION names it, the cohesive law.
+constexpr const char* kContacts = R"(*KEYWORD
+*NODE
+1,0,0,0
+2,1,0,0
+3,1,1,0
+4,0,1,0
+5,0,0,0.1
+6,1,0,0.1
+7,1,1,0.1
+8,0,1,0.1
+*ELEMENT_SHELL
+1,1,1,2,3,4
+2,2,5,6,7,8
+*PART
+lower
+1,1,1
+*PART
+upper
+2,1,1
+*SECTION_SHELL
+1
+0.1
+*MAT_ELASTIC
+1,1e-9,100.0,0.3
+*SET_PART_LIST
+2
+2
+*SET_SEGMENT
+5
+5,6,7,8
+*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID
+3,layers
+1,2,3,2
+*CONTACT_SURFACE_TO_SURFACE
+1,5,3,0
+*CONTROL_TERMINATION
+1.0
+*USER_INTERFACE_FRICTION
+         3        13         0
+         1      30.0       0.3               300.0     500.0    3.0E-5       0.0
+                 1.0    1.0E-6         0       0.1
+*END
+)";
+
+TEST(CheckCommand, ListsTheContacts) {
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("contacts.k", kContacts));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("contacts: 2\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  contact 3 'layers' *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID: "
+                       "slave part 1, master part set 2, cohesive law (UIF)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  contact (no CID) *CONTACT_SURFACE_TO_SURFACE: slave part 1, master "
+                       "segment set 5\n"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(CheckCommand, UserInterfaceFrictionWithoutItsContactIsAnError) {
+  std::string text = kContacts;
+  text.replace(text.find("3,layers"), 8, "4,layers");
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("contacts.k", text));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("contacts.k:38: *USER_INTERFACE_FRICTION: field NOSID: no "
+                       "*CONTACT_..._ID with CID 3"),
+            std::string::npos)
+      << r.err;
+}
+
 // The third-party decks of ../shared/decks/real: `check` either accepts each or stops with
 // errors that all name a file and a line; never a crash.
 TEST(CheckCommand, RealDecksAreAcceptedOrRejectedWithLocatedErrors) {

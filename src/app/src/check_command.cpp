@@ -4,8 +4,10 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
+#include <string>
 #include <variant>
 
 #include "plyform/app/commands.hpp"
@@ -52,6 +54,37 @@ void print_law(const model::ModelDesc& model, const model::UserInterfaceFriction
                "  derived at T_LO: omega = sigma_max^2 / C_N = {:g} [energy/area], "
                "g_c = sigma_max / C_N = {:g} [length]\n",
                law::adhesion_energy(smax, p.cn), smax / p.cn);
+  }
+}
+
+std::string side_name(model::ContactSideType type, int id) {
+  switch (type) {
+    case model::ContactSideType::segment_set:
+      return fmt::format("segment set {}", id);
+    case model::ContactSideType::part_set:
+      return fmt::format("part set {}", id);
+    case model::ContactSideType::part:
+      return fmt::format("part {}", id);
+    case model::ContactSideType::node_set:
+      return fmt::format("node set {}", id);
+  }
+  return fmt::format("{}", id);
+}
+
+// One line per contact: id, keyword, slave and master sides, and the cohesive law of a
+// *USER_INTERFACE_FRICTION that names it.
+void print_contacts(const model::ModelDesc& m, std::ostream& out) {
+  fmt::print(out, "contacts: {}\n", m.contacts.size());
+  for (const auto& c : m.contacts) {
+    const bool cohesive =
+        c.id != 0 &&
+        std::any_of(m.user_interface_frictions.begin(), m.user_interface_frictions.end(),
+                    [&](const auto& u) { return u.contact_id == c.id; });
+    fmt::print(out, "  contact {}{} {}: slave {}, master {}{}\n",
+               c.id != 0 ? std::to_string(c.id) : "(no CID)",
+               c.heading.empty() ? "" : " '" + c.heading + "'", c.keyword,
+               side_name(c.sstyp, c.ssid), side_name(c.mstyp, c.msid),
+               cohesive ? ", cohesive law (UIF)" : "");
   }
 }
 
@@ -171,6 +204,7 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
     fmt::print(out, "  curve {}{}: {} points\n", c.id, c.title.empty() ? "" : " (" + c.title + ")",
                c.abscissa.size());
   }
+  print_contacts(m, out);
   fmt::print(out, "cohesive interfaces: {}\n", m.user_interface_frictions.size());
   for (const auto& u : m.user_interface_frictions)
     print_law(m, u, out);

@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "plyform/setup/cohesive_law.hpp"
+#include "plyform/setup/validate_contact.hpp"
 #include "plyform/setup/validate_mesh.hpp"
 
 namespace plyform::setup {
@@ -18,6 +19,9 @@ std::string at(const model::SourceLocation& w) {
 
 std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
   std::vector<keyword::Diagnostic> errors = validate_mesh(model);
+  for (keyword::Diagnostic& d : validate_contact(model)) {
+    errors.push_back(std::move(d));
+  }
 
   std::unordered_map<int, const model::CurveDesc*> curves;
   for (const model::CurveDesc& c : model.curves) {

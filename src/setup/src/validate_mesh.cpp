@@ -2,54 +2,22 @@
 
 #include <algorithm>
 #include <array>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "id_table.hpp"
+
 namespace plyform::setup {
 namespace {
 
+using detail::at;
+using detail::cat;
+using detail::check_ref;
+using detail::IdTable;
 using keyword::Diagnostic;
 using model::SourceLocation;
-
-/// Concatenates values as text (fmt is not a dependency of this library).
-template <typename... Parts>
-std::string cat(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  return out.str();
-}
-
-std::string at(const SourceLocation& w) {
-  return cat(w.file, ":", w.line);
-}
-
-/// Ids of one kind with where each was first defined.
-class IdTable {
- public:
-  IdTable(std::string_view noun, std::string_view keyword) : noun_(noun), keyword_(keyword) {}
-
-  /// Adds an id; a duplicate is an error on the later definition.
-  void add(int id, const SourceLocation& where, std::string_view field,
-           std::vector<Diagnostic>& errors, std::string_view keyword = {}) {
-    const auto [it, inserted] = ids_.emplace(id, where);
-    if (!inserted) {
-      errors.push_back({where, std::string(keyword.empty() ? keyword_ : keyword),
-                        std::string(field),
-                        cat(noun_, " ", id, " is already defined at ", at(it->second))});
-    }
-  }
-  bool contains(int id) const { return ids_.contains(id); }
-  std::string_view noun() const { return noun_; }
-  std::string_view keyword() const { return keyword_; }
-
- private:
-  std::string noun_;
-  std::string keyword_;
-  std::unordered_map<int, SourceLocation> ids_;
-};
 
 /// One definition of an id whose range several keywords share (sections, materials).
 struct Definition {
@@ -75,16 +43,6 @@ void add_in_deck_order(IdTable& table, std::vector<Definition> definitions,
                    });
   for (const Definition& d : definitions) {
     table.add(d.id, d.where, field, errors, d.keyword);
-  }
-}
-
-/// Reports a reference to an id the table does not hold.
-void check_ref(const IdTable& table, int id, const SourceLocation& where, std::string_view keyword,
-               std::string_view field, std::vector<Diagnostic>& errors) {
-  if (!table.contains(id)) {
-    errors.push_back(
-        {where, std::string(keyword), std::string(field),
-         cat(table.noun(), " ", id, " is not defined (no ", table.keyword(), " with this id)")});
   }
 }
 
