@@ -2,6 +2,7 @@
 // An OutputSink for tests: keeps what the engine reports in memory.
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "plyform/engine/solver.hpp"
@@ -21,6 +22,11 @@ struct RecordingSink : engine::OutputSink {
       on_state(s);
   }
   void glstat(const engine::Energies& e) override { energies.push_back(e); }
+  /// Contact reports at the rcforc interval: (time, interfaces).
+  std::vector<std::pair<double, std::vector<contact::InterfaceReport>>> contact;
+  void contact_forces(double time, const std::vector<contact::InterfaceReport>& r) override {
+    contact.emplace_back(time, r);
+  }
   void nodout(const engine::Snapshot& s) override {
     if (on_nodout)
       on_nodout(s);

@@ -79,7 +79,7 @@ struct PassRuntime {
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
   double work = 0.0;
-  std::array<double, 3> resultant{};
+  std::array<double, 3> resultant{}, master_resultant{};
   double dt0 = 0.0;
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
@@ -448,6 +448,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     const std::size_t ns = cp.slave_count();
     if (t < pr.iface->birth || t > pr.iface->death) {
       pr.resultant = {0.0, 0.0, 0.0};
+      pr.master_resultant = {0.0, 0.0, 0.0};
       std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
       continue;
     }
@@ -519,7 +520,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 
     // Scatter in slave order: each node receives its contributions in the same order for any
     // number of threads.
-    std::array<double, 3> r{};
+    std::array<double, 3> r{}, rm{};
     const double sign = cp.slave_side_sign;
     for (std::size_t k = 0; k < ns; ++k) {
       const core::Index s = pr.seg[k];
@@ -543,11 +544,14 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         fx[m] += nj * f[0];
         fy[m] += nj * f[1];
         fz[m] += nj * f[2];
+        for (int c = 0; c < 3; ++c)
+          rm[static_cast<std::size_t>(c)] -= sign * nj * f[c];
       }
       for (int c = 0; c < 3; ++c)
         r[static_cast<std::size_t>(c)] += sign * f[c];
     }
     pr.resultant = r;
+    pr.master_resultant = rm;
     std::swap(pr.prev_force, pr.force);
     // `shape` then holds older values: measure() rewrites it for every located node, and
     // only located nodes read it.
@@ -566,8 +570,10 @@ std::vector<InterfaceReport> ContactSet::report() const {
       last = pr.iface;
     }
     InterfaceReport& r = out.back();
-    for (int c = 0; c < 3; ++c)
-      r.force[static_cast<std::size_t>(c)] += pr.resultant[static_cast<std::size_t>(c)];
+    for (std::size_t c = 0; c < 3; ++c) {
+      r.force[c] += pr.resultant[c];
+      r.master_force[c] += pr.master_resultant[c];
+    }
     r.work += pr.work;
     const law::BatchHistory& h = pr.hist;
     const std::size_t ns = pr.pass->slave_count();

@@ -21,7 +21,10 @@ namespace plyform::contact {
 struct InterfaceReport {
   core::GlobalId id = 0;
   std::array<double, 3> force{};  ///< resultant contact force on the slave side, global axes
-  double work = 0.0;              ///< contact energy: work the contact forces took from the nodes
+  /// Resultant on the master side: minus `force` to round-off (the shape functions of a
+  /// segment sum to one), kept as a check of the force distribution.
+  std::array<double, 3> master_force{};
+  double work = 0.0;  ///< contact energy: work the contact forces took from the nodes
   // The law's books, summed over the slave nodes (energy units).
   double stored = 0.0;         ///< held now: penalty and cohesive springs, stick springs
   double damage = 0.0;         ///< adhesion energy released by damage

@@ -1,0 +1,226 @@
+// Penalty contact with friction, end to end (reader, build, engine): a shell plate pressed
+// onto a fixed plate by a load and dragged at constant speed. References: the contact force
+// carries the load (statics), the friction force is mu times the normal force (Coulomb), mu
+// follows LS-DYNA's FD + (FS - FD) exp(-DC v), the master side receives minus the slave side's
+// force, the penetration equals load / stiffness of docs/contact.md (SOFT = 0 and 1), and
+// automatic contact does not care how the segments are oriented.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact_decks.hpp"
+
+namespace plyform {
+namespace {
+
+constexpr double kE = 2.0e5, kNu = 0.3, kRho = 7.85e-9;
+
+struct TwoPlates {
+  double end = 3e-3;
+  std::string contact = "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID";
+  std::string friction = "0.3,0.3,0,0,20";  // FS FD DC VC VDC
+  std::string card3 = "1,1";                // SFS SFM ...
+  std::string card_a;                       // optional card A (SOFT ...)
+  int slave_n = 2;                          // slave shells per side (4 x 4 mm)
+  int master_n = 4;                         // master shells per side (8 x 8 mm)
+  double slave_size = 4.0;
+  double load = 16.0;  // total normal load on the slave plate [N]
+  double vx = 10.0;    // drag speed [mm/s]
+  bool flip_master = false, flip_slave = false;
+  int sstyp = 3, mstyp = 3, ssid = 2, msid = 1;
+  std::string extra;  // more keywords
+};
+
+std::string two_plates(const TwoPlates& c) {
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(c.end);
+  d.kw("*DATABASE_GLSTAT").card(c.end / 300);
+  d.kw("*DATABASE_RCFORC").card(c.end / 300);
+  d.kw("*DATABASE_NODOUT").card(c.end / 300);
+  d.kw("*PART").kw("master").card(1, 1, 1);
+  d.kw("*PART").kw("slave").card(2, 1, 1);
+  d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
+  d.kw("*MAT_ELASTIC").card(1, kRho, kE, kNu);
+  const double m = 8.0, s0 = 0.5 * (m - c.slave_size);
+  const auto master = d.plate(1, 1, 1, 0, m, 0, m, c.master_n, c.master_n, 0.0, c.flip_master);
+  const auto slave = d.plate(2, 1001, 1001, s0, s0 + c.slave_size, s0, s0 + c.slave_size, c.slave_n,
+                             c.slave_n, 1.0, c.flip_slave);
+  d.kw("*DATABASE_HISTORY_NODE").card(slave[slave.size() / 2]);
+  d.kw("*SET_NODE_LIST").card(1).ids(master);
+  d.kw("*SET_NODE_LIST").card(2).ids(slave);
+  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 1, 1, 1, 1, 1, 1);
+  d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 1, 0, 1, 1, 1);
+  d.kw("*DEFINE_CURVE").card(1).card(0.0, 0.0).card(c.end / 6, 1.0).card(c.end, 1.0);
+  d.kw("*DEFINE_CURVE").card(2).card(0.0, c.vx).card(c.end, c.vx);
+  d.kw("*LOAD_NODE_SET").card(2, 3, 1, -c.load / static_cast<double>(slave.size()));
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 1, 0, 2, 1.0);
+  d.kw(c.contact).card(7, "plates");
+  d.card(c.ssid, c.msid, c.sstyp, c.mstyp).kw(c.friction).kw(c.card3);
+  if (!c.card_a.empty())
+    d.kw(c.card_a);
+  d.raw(c.extra);
+  return d.text();
+}
+
+// Time averages over the last third of the run (the load is steady, the drag too).
+struct Steady {
+  double fx = 0, fy = 0, fz = 0;
+};
+Steady steady(const test::DeckRun& r, double end) {
+  Steady s;
+  int n = 0;
+  for (const auto& [t, reports] : r.sink.contact) {
+    if (t < 2.0 * end / 3.0)
+      continue;
+    s.fx += reports.at(0).force[0];
+    s.fy += reports.at(0).force[1];
+    s.fz += reports.at(0).force[2];
+    ++n;
+  }
+  s.fx /= n;
+  s.fy /= n;
+  s.fz /= n;
+  return s;
+}
+
+TEST(ContactFriction, LoadIsCarriedAndFrictionIsMuTimesNormalForce) {
+  TwoPlates c;
+  test::DeckRun r;
+  run_deck(two_plates(c), r);
+  const Steady s = steady(r, c.end);
+  EXPECT_NEAR(s.fz, c.load, 0.005 * c.load);  // statics: the contact carries the load
+  EXPECT_NEAR(-s.fx / s.fz, 0.3, 0.003);      // Coulomb, sliding against the drag
+  EXPECT_NEAR(s.fy, 0.0, 1e-9 * c.load);
+  // Force balance at every output: master side = minus slave side, to round-off.
+  for (const auto& [t, reports] : r.sink.contact) {
+    const auto& rep = reports.at(0);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(
+          rep.force[static_cast<std::size_t>(k)] + rep.master_force[static_cast<std::size_t>(k)],
+          0.0, 1e-12 * c.load)
+          << "t = " << t;
+    }
+  }
+  // The glstat contact energy is the interface's work, which its books account for.
+  const auto& last = r.sink.contact.back().second.at(0);
+  EXPECT_NEAR(r.sink.energies.back().contact, last.work, 1e-12 * std::abs(last.work));
+  EXPECT_NEAR(last.stored + last.friction + last.damping, last.work, 0.01 * last.work);
+  EXPECT_GT(last.friction, 0.5 * last.work);
+}
+
+TEST(ContactFriction, StaticToDynamicDecayFollowsTheExponentialLaw) {
+  for (double v : {10.0, 40.0}) {
+    TwoPlates c;
+    c.friction = "0.4,0.2,0.05,0,20";
+    c.vx = v;
+    test::DeckRun r;
+    run_deck(two_plates(c), r);
+    const Steady s = steady(r, c.end);
+    const double mu = 0.2 + (0.4 - 0.2) * std::exp(-0.05 * v);
+    EXPECT_NEAR(-s.fx / s.fz, mu, 0.01 * mu) << "v = " << v;
+  }
+}
+
+TEST(ContactFriction, ViscousLimitCapsTheFrictionTraction) {
+  TwoPlates c;
+  c.friction = "0.3,0.3,0,0.2,20";  // VC = 0.2 MPa < mu P = 0.3 MPa
+  test::DeckRun r;
+  run_deck(two_plates(c), r);
+  const Steady s = steady(r, c.end);
+  EXPECT_NEAR(-s.fx, 0.2 * 16.0, 0.01 * 3.2);  // VC times the contact area (16 mm^2)
+}
+
+TEST(ContactFriction, NodeSetAndSegmentSetSidesGiveThePartResult) {
+  TwoPlates parts;
+  test::DeckRun a;
+  run_deck(two_plates(parts), a);
+  TwoPlates sets = parts;
+  sets.sstyp = 4;  // node set 2
+  sets.mstyp = 0;  // segment set 5: the master plate's shells, same node order
+  sets.ssid = 2;
+  sets.msid = 5;
+  std::ostringstream seg;
+  seg << "*SET_SEGMENT\n5\n";
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const int n = 1 + j * 5 + i;
+      seg << n << "," << n + 1 << "," << n + 6 << "," << n + 5 << "\n";
+    }
+  sets.extra = seg.str();
+  test::DeckRun b;
+  run_deck(two_plates(sets), b);
+  ASSERT_EQ(a.sink.contact.size(), b.sink.contact.size());
+  for (std::size_t i = 0; i < a.sink.contact.size(); ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_NEAR(a.sink.contact[i].second[0].force[k], b.sink.contact[i].second[0].force[k],
+                  1e-9 * 16.0);
+    }
+  }
+}
+
+TEST(ContactFriction, AutomaticContactIgnoresSegmentOrientation) {
+  for (bool flip : {false, true}) {
+    TwoPlates c;
+    c.contact = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID";
+    c.flip_master = flip;
+    c.flip_slave = flip;
+    test::DeckRun r;
+    run_deck(two_plates(c), r);
+    const Steady s = steady(r, c.end);
+    EXPECT_NEAR(s.fz, c.load, 0.005 * c.load) << "flipped " << flip;
+    EXPECT_NEAR(-s.fx / s.fz, 0.3, 0.003) << "flipped " << flip;
+    for (const auto& [t, reports] : r.sink.contact) {
+      for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(reports[0].force[k] + reports[0].master_force[k], 0.0, 1e-12 * c.load);
+    }
+  }
+}
+
+// One slave shell (2 x 2 mm) on one master shell (8 x 8 mm), 1 N per slave node, held still.
+// docs/contact.md: SOFT = 0, PENOPT 1: k = min(slave node share, master segment) with
+// segment stiffness SLSFAC K A / (max diagonal); SOFT = 1: max(that, SOFSCL m* / (2 dt0^2)).
+double one_element_penetration(const std::string& card_a, test::DeckRun& r) {
+  TwoPlates c;
+  c.slave_n = 1;
+  c.master_n = 1;
+  c.slave_size = 2.0;
+  c.load = 4.0;
+  c.vx = 0.0;
+  c.friction = "0,0,0,0,60";
+  c.card_a = card_a;
+  run_deck(two_plates(c), r);
+  double uz = 0.0;
+  int n = 0;
+  for (const auto& [t, v] : r.uz) {
+    if (t >= 2.0 * c.end / 3.0) {
+      uz += v.at(0);
+      ++n;
+    }
+  }
+  return -uz / n;
+}
+
+TEST(ContactStiffness, PenetrationMatchesTheSoft0Formula) {
+  test::DeckRun r;
+  const double delta = one_element_penetration("", r);
+  const double bulk = kE / (3.0 * (1.0 - 2.0 * kNu));
+  const double k_slave = 0.1 * bulk * 4.0 / std::sqrt(8.0) / 4.0;  // a quarter of its segment
+  const double k_master = 0.1 * bulk * 64.0 / std::sqrt(128.0);
+  EXPECT_NEAR(delta, 1.0 / std::min(k_slave, k_master), 0.02 / std::min(k_slave, k_master));
+}
+
+TEST(ContactStiffness, PenetrationMatchesTheSoft1Formula) {
+  test::DeckRun r;
+  const double delta = one_element_penetration("1,0.5", r);
+  const double bulk = kE / (3.0 * (1.0 - 2.0 * kNu));
+  const double k0 = 0.1 * bulk * 4.0 / std::sqrt(8.0) / 4.0;
+  const double ms = kRho * 1.0 * 4.0 / 4.0, mm = kRho * 1.0 * 64.0 / 4.0;  // lumped masses
+  const double m_eff = ms * mm / (ms + mm);
+  const double dt0 = r.result.dt_first;
+  const double k1 = 0.5 * 0.5 * m_eff / (dt0 * dt0);
+  ASSERT_GT(k1, 1.5 * k0) << "the test needs the SOFT = 1 stiffness to govern";
+  EXPECT_NEAR(delta, 1.0 / k1, 0.02 / k1);
+}
+
+}  // namespace
+}  // namespace plyform
