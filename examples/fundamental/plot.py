@@ -58,6 +58,39 @@ def run(outdir, sub, name):
     return params, table(os.path.join(d, "rcforc.csv")), co, d
 
 
+def vtu_check(d, node, co, state_index=13):
+    """The ParaView state `state_index` (t = 13 ms: re-healing under pressure) carries the
+    point arrays beta, contact_pressure, gap, contact_state; at the history node they equal
+    the row of cohesive.csv written at the same cycle."""
+    try:
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+    except ImportError:
+        print("skip VTU read-back: python3-vtk9 is not installed")
+        return
+    name = f"results_{state_index:04d}.vtu"
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(d, name))
+    reader.Update()
+    grid = reader.GetOutput()
+    pd = grid.GetPointData()
+    time = grid.GetFieldData().GetArray("TimeValue")
+    ids = vtk_to_numpy(pd.GetArray("node_id"))
+    i = int(np.where(ids == node)[0][0])
+    states = ["APPROACHING", "CONTACT", "SEPARATING", "DETACHED"]
+    got = [float(vtk_to_numpy(pd.GetArray(a))[i]) for a in ("beta", "contact_pressure", "gap")]
+    state = states[int(vtk_to_numpy(pd.GetArray("contact_state"))[i])]
+    t_state = time.GetValue(0) if time is not None else 1e-3 * state_index
+    row = int(np.argmin(abs(co["time"] - t_state)))
+    want = [co["beta"][row], co["pressure"][row], co["gap"][row]]
+    same = (np.allclose(got, want, rtol=1e-9, atol=0) and state == co["state"][row]
+            and 0.0 < got[0] < 1.0)
+    print(f"{'ok  ' if same else 'FAIL'} {name}: beta, contact_pressure, gap, contact_state of "
+          f"node {node} = cohesive.csv at t = {co['time'][row]:.6g} ({got}, {state})")
+    if not same:
+        failures.append("vtu")
+
+
 def sigma_max(p, temperature):
     if temperature <= p["t_lo"]:
         return p["smax_lo"]
@@ -102,6 +135,8 @@ def main(outdir):
     books = ie["stored"] + ie["damage"] + ie["viscous"] + ie["friction"] + ie["damping"]
     check("interface work = stored + damage + viscous + friction + damping", books[-1], ie["work"][-1], 0.01)
     check("glstat contact energy = interface work", gl["contact"][-1], ie["work"][-1], 1e-9)
+    # The last ParaView state carries the interface arrays: read it back with VTK.
+    vtu_check(d, p["history_node"], co)
     # Threads: the same numbers, bit for bit.
     with open(os.path.join(d, "rcforc.csv")) as a, open(os.path.join(outdir, "full_2threads", "rcforc.csv")) as b:
         same = a.read() == b.read()
