@@ -91,6 +91,15 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
              "work {:.6g}, ratio {:.6f}\n",
              result.last.kinetic, result.last.internal, result.last.hourglass,
              result.last.external_work, result.last.ratio);
+  if (!model.contacts.empty()) {
+    std::size_t slaves = 0;
+    for (const core::ContactInterface& c : model.contacts)
+      for (const core::ContactPass& p : c.passes)
+        slaves += p.slave_count();
+    fmt::print(out, "contact: {} interface{}, {} slave nodes, energy {:.6g}, {} bucket sorts\n",
+               model.contacts.size(), model.contacts.size() == 1 ? "" : "s", slaves,
+               result.last.contact, result.contact_searches);
+  }
   if (result.added_mass > 0.0) {
     fmt::print(out, "mass scaling added {:.6g} ({:.3g} % of {:.6g})\n", result.added_mass,
                100.0 * summary.added_mass_ratio, result.physical_mass);
