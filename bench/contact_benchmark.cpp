@@ -112,7 +112,7 @@ Plates build(int n) {
     p.mass[i] = kRho * kT * node_area[i];
   // As ContactSet sets it: offsets on both sides twice, and the margin (half a diagonal).
   const double margin = 0.5 * std::sqrt(2.0) * kH;
-  p.radius.assign(cp.segment_count(), 2.0 * (0.5 * kT + 0.5 * kT) + margin);
+  p.radius.assign(cp.segment_count(), (0.5 * kT + 0.5 * kT) + margin);
 
   core::ContactInterface ci;
   ci.id = 1;

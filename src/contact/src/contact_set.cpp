@@ -81,6 +81,7 @@ struct PassRuntime {
   double work = 0.0;
   std::array<double, 3> resultant{}, master_resultant{};
   double dt0 = 0.0;
+  bool need_mass = false;  // the effective mass matters: damping (VDC) or SOFT = 1
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -103,6 +104,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->iface = &ci;
       pr->pass = &cp;
       pr->dt0 = dt0;
+      pr->need_mass = params.vdc > 0.0 || ci.penalty == core::PenaltyKind::mass;
       const std::size_t ns = cp.slave_count();
       const std::size_t nseg = cp.segment_count();
       pr->history = law::HistoryStore(ns);
@@ -127,9 +129,9 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->seg_radius.resize(nseg);
       double max_radius = 0.0;
       for (std::size_t s = 0; s < nseg; ++s) {
-        // Offsets on both sides and a penetration as deep as both again, the cohesive band,
-        // and the margin.
-        pr->seg_radius[s] = 2.0 * (cp.segment_offset[s] + max_slave_offset) + capture + pr->margin;
+        // A touching node is within the two offsets of the segment's mid-surface (a deeper
+        // one is closer still); the cohesive band; the margin for motion between searches.
+        pr->seg_radius[s] = cp.segment_offset[s] + max_slave_offset + capture + pr->margin;
         max_radius = std::max(max_radius, pr->seg_radius[s]);
       }
       pr->far_gap = 2.0 * (capture + max_radius) + 1.0e-30;
@@ -178,13 +180,19 @@ const double* at(const double* packed, core::Index node) {
   return packed + kStride * static_cast<std::size_t>(node);
 }
 
+// `guess`: shape functions of an earlier projection on the same segment (null: start at the
+// centre); the Gauss-Newton iteration then usually converges in one or two steps.
 SegmentPoint project(const core::ContactPass& cp, core::Index s, const double* p,
-                     const double* packed) {
+                     const double* packed, const double* guess = nullptr) {
   const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
   if (q[2] == q[3])
     return project_triangle(p, at(packed, q[0]), at(packed, q[1]), at(packed, q[2]));
   const double* c[4] = {at(packed, q[0]), at(packed, q[1]), at(packed, q[2]), at(packed, q[3])};
-  return project_quad(p, c);
+  if (guess == nullptr)
+    return project_quad(p, c);
+  // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
+  return project_quad(p, c, guess[1] + guess[2] - guess[0] - guess[3],
+                      guess[2] + guess[3] - guess[0] - guess[1]);
 }
 
 // The segment of slave k: its current one while the projection stays inside it, else the
@@ -194,7 +202,8 @@ core::Index locate(const PassRuntime& pr, std::size_t k, const double* packed, S
   const double* p = at(packed, cp.slave_nodes[k]);
   const core::Index cur = pr.seg[k];
   if (cur >= 0) {
-    const SegmentPoint sp = project(cp, cur, p, packed);
+    // prev_shape holds last cycle's projection on `cur` (apply() swaps the arrays).
+    const SegmentPoint sp = project(cp, cur, p, packed, &pr.prev_shape[4 * k]);
     if (!sp.degenerate && sp.outside == 0.0 &&
         std::fabs(sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)]) {
       best = sp;
@@ -370,9 +379,10 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       e1[2] = -n[1] * n[2];
       len = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
     }
-    e1[0] /= len;
-    e1[1] /= len;
-    e1[2] /= len;
+    const double inv_len = 1.0 / len;
+    e1[0] *= inv_len;
+    e1[1] *= inv_len;
+    e1[2] *= inv_len;
     const double e2[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2],
                           n[0] * e1[1] - n[1] * e1[0]};
     for (int c = 0; c < 3; ++c) {
@@ -390,12 +400,12 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       du[0] -= nj * v[3];
       du[1] -= nj * v[4];
       du[2] -= nj * v[5];
-      if (nj > 0.0)
+      if (pr.need_mass && nj > 0.0)
         mm += nj * node_mass(mass, rigid, q[j]);
     }
     pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
     pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
-    const double me = effective_mass(node_mass(mass, rigid, node), mm);
+    const double me = pr.need_mass ? effective_mass(node_mass(mass, rigid, node), mm) : 0.0;
     pr.m_eff[k] = me;
     const double kk = penalty(pr, k, s, me);
     pr.k_normal[k] = kk / cp.slave_area[k];
@@ -484,8 +494,28 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     in.area = pr.area.data();
     in.mass = pr.m_eff.data();
     in.dt = dt;
-    law::BatchOutput out{pr.pressure.data(), pr.tau_x.data(), pr.tau_y.data(), pr.stored.data()};
-    pr.law.update_batch(in, pr.hist, out);
+    // The law is immutable and every node's update independent: chunks of the batch run in
+    // parallel (same arithmetic per node, so the same bits for any thread count).
+    constexpr std::size_t kLawChunk = 4096;
+    const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
+#pragma omp parallel for schedule(static)
+    for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
+      const std::size_t b = static_cast<std::size_t>(lc) * kLawChunk;
+      const std::size_t e = std::min(ns, b + kLawChunk);
+      law::BatchInput ci = in;
+      ci.count = e - b;
+      for (const double** a : {&ci.gap, &ci.slip_x, &ci.slip_y, &ci.temperature, &ci.k_normal,
+                               &ci.k_tangent, &ci.area, &ci.mass})
+        *a += b;
+      law::BatchHistory ch = pr.hist;
+      ch.state += b;
+      for (double** a : {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y,
+                         &ch.e_damage, &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing})
+        *a += b;
+      const law::BatchOutput co{pr.pressure.data() + b, pr.tau_x.data() + b, pr.tau_y.data() + b,
+                                pr.stored.data() + b};
+      pr.law.update_batch(ci, ch, co);
+    }
 
     // Forces from the tractions, and the second half of the step's work.
 #pragma omp parallel for schedule(static)

@@ -4,6 +4,7 @@
 // calls these for every slave node and candidate segment, so they are inline and allocate
 // nothing.
 
+#include <algorithm>
 #include <cmath>
 
 namespace plyform::contact {
@@ -59,7 +60,7 @@ inline SegmentPoint project_triangle(const double* p, const double* c0, const do
     s.x[k] = c0[k] + xi * a[k] + eta * b[k];
   double out = 0.0;
   for (double w : {s.shape[0], s.shape[1], s.shape[2]})
-    out = std::fmax(out, -w);
+    out = std::max(out, -w);
   // Scaled like the quadrilateral's measure (its parametric range is twice as wide).
   s.outside = 2.0 * out;
   detail::finish(p, a, b, s);
@@ -67,49 +68,61 @@ inline SegmentPoint project_triangle(const double* p, const double* c0, const do
 }
 
 /// Bilinear quadrilateral c0..c3 (parametric square [-1, 1]^2); `xi0`, `eta0` start the
-/// iteration (the last projection, or 0).
+/// iteration (the last projection, or 0). Newton on the squared distance with the bilinear
+/// map's twist X_{,xi eta} (its only second derivative): quadratic convergence on warped
+/// segments; Gauss-Newton where that Hessian is not positive (far from a strongly warped one).
+/// Stops once a step is below 1e-10 in parametric measure, keeping the point it evaluated.
 inline SegmentPoint project_quad(const double* p, const double* const c[4], double xi0 = 0.0,
                                  double eta0 = 0.0) {
   SegmentPoint s;
+  // X(xi, eta) = a0 + a1 xi + a2 eta + a3 xi eta: the bilinear map in its monomial form, so an
+  // iteration costs a few multiply-adds (a3 is the twist X_{,xi eta}).
+  double a0[3], a1[3], a2[3], a3[3];
+  for (int k = 0; k < 3; ++k) {
+    a0[k] = 0.25 * (c[0][k] + c[1][k] + c[2][k] + c[3][k]);
+    a1[k] = 0.25 * (-c[0][k] + c[1][k] + c[2][k] - c[3][k]);
+    a2[k] = 0.25 * (-c[0][k] - c[1][k] + c[2][k] + c[3][k]);
+    a3[k] = 0.25 * (c[0][k] - c[1][k] + c[2][k] - c[3][k]);
+  }
   double xi = xi0, eta = eta0;
   double tx[3] = {0, 0, 0}, ty[3] = {0, 0, 0};
-  for (int iter = 0; iter < 8; ++iter) {
-    const double n[4] = {0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta),
-                         0.25 * (1 + xi) * (1 + eta), 0.25 * (1 - xi) * (1 + eta)};
-    const double dxi[4] = {-0.25 * (1 - eta), 0.25 * (1 - eta), 0.25 * (1 + eta),
-                           -0.25 * (1 + eta)};
-    const double deta[4] = {-0.25 * (1 - xi), -0.25 * (1 + xi), 0.25 * (1 + xi), 0.25 * (1 - xi)};
+  for (int iter = 0; iter < 16; ++iter) {
+    double r[3];
     for (int k = 0; k < 3; ++k) {
-      s.x[k] = n[0] * c[0][k] + n[1] * c[1][k] + n[2] * c[2][k] + n[3] * c[3][k];
-      tx[k] = dxi[0] * c[0][k] + dxi[1] * c[1][k] + dxi[2] * c[2][k] + dxi[3] * c[3][k];
-      ty[k] = deta[0] * c[0][k] + deta[1] * c[1][k] + deta[2] * c[2][k] + deta[3] * c[3][k];
+      tx[k] = a1[k] + a3[k] * eta;
+      ty[k] = a2[k] + a3[k] * xi;
+      s.x[k] = a0[k] + a1[k] * xi + ty[k] * eta;
+      r[k] = p[k] - s.x[k];
     }
-    for (int k = 0; k < 4; ++k)
-      s.shape[k] = n[k];
-    const double r[3] = {p[0] - s.x[0], p[1] - s.x[1], p[2] - s.x[2]};
-    const double a = detail::dot3(tx, tx), b = detail::dot3(tx, ty), d = detail::dot3(ty, ty);
-    const double det = a * d - b * b;
-    if (!(det > 0.0)) {
+    const double a = detail::dot3(tx, tx), d = detail::dot3(ty, ty);
+    double b = detail::dot3(tx, ty);
+    const double gn = a * d - b * b;  // Gauss-Newton determinant: zero for a degenerate map
+    if (!(gn > 0.0)) {
       s.degenerate = true;
       return s;
     }
+    const double bt = b - detail::dot3(r, a3);
+    double det = a * d - bt * bt;
+    if (det > 1e-3 * gn) {
+      b = bt;
+    } else {
+      det = gn;
+    }
+    const double inv = 1.0 / det;
     const double gx = detail::dot3(tx, r), gy = detail::dot3(ty, r);
-    const double dx = (d * gx - b * gy) / det;
-    const double dy = (a * gy - b * gx) / det;
+    const double dx = (d * gx - b * gy) * inv;
+    const double dy = (a * gy - b * gx) * inv;
+    if (std::fabs(dx) + std::fabs(dy) < 1e-10)
+      break;  // converged: keep the evaluated point
     // Far outside the segment the bilinear map folds: keep the iterate in a sane range.
-    xi = std::fmax(-3.0, std::fmin(3.0, xi + dx));
-    eta = std::fmax(-3.0, std::fmin(3.0, eta + dy));
-    if (std::fabs(dx) + std::fabs(dy) < 1e-12)
-      break;
+    xi = std::clamp(xi + dx, -3.0, 3.0);
+    eta = std::clamp(eta + dy, -3.0, 3.0);
   }
-  const double n[4] = {0.25 * (1 - xi) * (1 - eta), 0.25 * (1 + xi) * (1 - eta),
-                       0.25 * (1 + xi) * (1 + eta), 0.25 * (1 - xi) * (1 + eta)};
-  for (int k = 0; k < 3; ++k) {
-    s.x[k] = n[0] * c[0][k] + n[1] * c[1][k] + n[2] * c[2][k] + n[3] * c[3][k];
-  }
-  for (int k = 0; k < 4; ++k)
-    s.shape[k] = n[k];
-  s.outside = std::fmax(0.0, std::fmax(std::fabs(xi), std::fabs(eta)) - 1.0);
+  s.shape[0] = 0.25 * (1 - xi) * (1 - eta);
+  s.shape[1] = 0.25 * (1 + xi) * (1 - eta);
+  s.shape[2] = 0.25 * (1 + xi) * (1 + eta);
+  s.shape[3] = 0.25 * (1 - xi) * (1 + eta);
+  s.outside = std::max(0.0, std::max(std::fabs(xi), std::fabs(eta)) - 1.0);
   detail::finish(p, tx, ty, s);
   return s;
 }
