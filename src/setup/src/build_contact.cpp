@@ -423,6 +423,15 @@ struct ContactBuilder {
         continue;
       const bool two_way =
           ci.kind == core::ContactKind::two_way || ci.kind == core::ContactKind::automatic;
+      if (two_way && ci.cohesive) {
+        // Both passes would bond: every pair of layers would carry its adhesion twice.
+        error(uif->where, "*USER_INTERFACE_FRICTION", "NOSID",
+              "contact " + std::to_string(c.id) + " (" + c.keyword +
+                  ") is two-way: the cohesive law acts once per slave node, so it needs a "
+                  "ONE_WAY or FORMING_ONE_WAY contact (slave: the layer whose nodes carry the "
+                  "law)");
+        continue;
+      }
       if (two_way && c.sstyp == model::ContactSideType::node_set) {
         error(c.card1, c.keyword, "SSTYP",
               "a two-way contact needs segments on its slave side: SSTYP 4 (node set) gives "

@@ -175,5 +175,25 @@ TEST(ContactCohesive, OneAndTwoThreadsGiveTheSameBits) {
   EXPECT_GT(one.sink.contact.back().second[0].in_contact, 100u);
 }
 
+TEST(ContactCohesive, TwoWayContactWithTheCohesiveLawIsALocatedError) {
+  Bonded c;
+  c.z_curve = "0,0\n0.001,0\n";
+  c.x_curve = "0,0\n0.001,0\n";
+  std::string text = bonded_deck(c);
+  const std::string one_way = "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID";
+  text.replace(text.find(one_way), one_way.size(), "*CONTACT_SURFACE_TO_SURFACE_ID");
+  test::TempDir dir;
+  const auto read = keyword::read_deck(dir.write("deck.k", text));
+  ASSERT_TRUE(read.ok());
+  ASSERT_TRUE(setup::validate(read.model).empty());
+  const auto built = setup::build(read.model);
+  ASSERT_EQ(built.errors.size(), 1u);
+  const keyword::Diagnostic& e = built.errors.front();
+  EXPECT_EQ(e.keyword, "*USER_INTERFACE_FRICTION");
+  EXPECT_EQ(e.field, "NOSID");
+  EXPECT_GT(e.where.line, 0);
+  EXPECT_NE(e.message.find("ONE_WAY"), std::string::npos) << e.message;
+}
+
 }  // namespace
 }  // namespace plyform
