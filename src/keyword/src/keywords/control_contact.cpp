@@ -58,7 +58,8 @@ constexpr std::array kCard1{
               .type = FieldType::kInteger,
               .unit = "-",
               .description = "LS-DYNA's automatic reorientation of segments at the start (0-4); "
-                             "read and ignored (plyform does not reorient segments)",
+                             "read and not needed: plyform tracks the side of each slave node "
+                             "(docs/contact.md), whatever the segment order",
               .allowed = kZeroToFour},
     FieldSpec{.name = "ENMASS",
               .type = FieldType::kInteger,
