@@ -347,6 +347,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     pr.work_part[k] = w;
     pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
     SegmentPoint sp;
+    const bool was_located = pr.seg[k] >= 0;
     const core::Index s = locate(pr, k, packed, sp);
     pr.seg[k] = s;
     if (s < 0) {
@@ -363,10 +364,15 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     const double offset = cp.slave_offset[k] + cp.segment_offset[static_cast<std::size_t>(s)];
     const auto state = static_cast<law::NodeState>(h.state[k]);
     const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
+    // A node that had no segment last cycle (off an edge, beyond reach) takes the side it is
+    // on now: it cannot have come through the surface.
     signed char& side = pr.side[k];
-    if (side == 0 || (free && std::fabs(sp.distance) > offset))
+    if (side == 0 || (free && (!was_located || std::fabs(sp.distance) > offset)))
       side = sp.distance >= 0.0 ? 1 : -1;
     pr.gap[k] = side * sp.distance - offset;
+    // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
+    if (!was_located)
+      h.gap[k] = pr.gap[k];
     double* fr = &pr.frame[9 * k];
     const double n[3] = {side * sp.normal[0], side * sp.normal[1], side * sp.normal[2]};
     // Tangent axes from the global x axis (y where the normal is close to x): continuous as
