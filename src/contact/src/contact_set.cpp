@@ -65,6 +65,9 @@ struct PassRuntime {
   std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
   std::vector<double> tracked_ref;         // their positions at the last search
   double margin = 0.0;
+  double capture = 0.0;  // the cohesive band
+  // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
+  std::vector<double> slave_offset, seg_offset;
   double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
   long cycles_since_search = 0;
   bool searched = false;
@@ -123,6 +126,9 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         size_sum += std::max(d(q[0], q[2]), d(q[1], q[3]));
       }
       pr->margin = nseg > 0 ? 0.5 * size_sum / static_cast<double>(nseg) : 0.0;
+      pr->capture = capture;
+      pr->slave_offset = cp.slave_offset;
+      pr->seg_offset = cp.segment_offset;
       double max_slave_offset = 0.0;
       for (double o : cp.slave_offset)
         max_slave_offset = std::max(max_slave_offset, o);
@@ -166,6 +172,31 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
 }
 
 ContactSet::~ContactSet() = default;
+
+void ContactSet::follow_shell_thickness(std::vector<const double*> thickness) {
+  shell_thickness_ = std::move(thickness);
+}
+
+void ContactSet::follow_thickness(PassRuntime& pr) const {
+  const core::ContactPass& cp = *pr.pass;
+  const auto t = [&](core::Index shell) {
+    return *shell_thickness_[static_cast<std::size_t>(shell)];
+  };
+  for (std::size_t s = 0; s < cp.segment_shell.size(); ++s) {
+    if (cp.segment_shell[s] >= 0)
+      pr.seg_offset[s] = cp.segment_offset_factor[s] * t(cp.segment_shell[s]);
+  }
+  const std::size_t ns = cp.slave_count();
+  for (std::size_t k = 0; k < ns; ++k) {
+    const std::size_t b = cp.slave_shell_start[k], e = cp.slave_shell_start[k + 1];
+    if (e == b)
+      continue;
+    double sum = 0.0;
+    for (std::size_t j = b; j < e; ++j)
+      sum += t(cp.slave_shells[j]);
+    pr.slave_offset[k] = cp.slave_offset_factor[k] * sum / static_cast<double>(e - b);
+  }
+}
 
 std::size_t ContactSet::slave_count() const {
   std::size_t n = 0;
@@ -278,6 +309,13 @@ double node_mass(const std::vector<double>& mass, const unsigned char* rigid, co
 void search(PassRuntime& pr, const double* packed, const std::vector<double>& mass,
             const unsigned char* rigid, double tssfac) {
   const core::ContactPass& cp = *pr.pass;
+  if (cp.offsets_follow_thickness) {
+    double max_slave_offset = 0.0;
+    for (double o : pr.slave_offset)
+      max_slave_offset = std::max(max_slave_offset, o);
+    for (std::size_t s = 0; s < pr.seg_radius.size(); ++s)
+      pr.seg_radius[s] = pr.seg_offset[s] + max_slave_offset + pr.capture + pr.margin;
+  }
   pr.grid.build(cp.segments, packed, kStride, pr.seg_radius);
   pr.grid.query(cp.slave_nodes, packed, kStride, pr.cand_start, pr.cand);
   for (std::size_t t = 0; t < pr.tracked_nodes.size(); ++t) {
@@ -361,7 +399,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       pr.shape[4 * k + j] = sp.shape[j];
     // Side: fixed while the node is in contact or bonded; otherwise the side it is on when
     // clear of both surfaces (automatic orientation of shells touched from either side).
-    const double offset = cp.slave_offset[k] + cp.segment_offset[static_cast<std::size_t>(s)];
+    const double offset = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
     const auto state = static_cast<law::NodeState>(h.state[k]);
     const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
     // A node that had no segment last cycle (off an edge, beyond reach) takes the side it is
@@ -468,6 +506,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
       continue;
     }
+    if (cp.offsets_follow_thickness && !shell_thickness_.empty())
+      follow_thickness(pr);
     // Re-search once the contact nodes moved far enough to bring a slave node near a segment
     // outside its candidate list (or at the deck's fixed interval).
     ++pr.cycles_since_search;

@@ -306,6 +306,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   double dt = stable_step(ir);
   if (!model.contacts.empty()) {
     contact.emplace(model, s.mass, has_rigid ? is_rigid.data() : nullptr, stable_step(ir), tssfac);
+    std::vector<const double*> thickness;  // every shell, across the blocks in order
+    for (const element::ShellBlockState& b : shells)
+      for (const double& v : b.thickness)
+        thickness.push_back(&v);
+    contact->follow_shell_thickness(std::move(thickness));
     contact->start(packed.data());
     for (const std::string& w : contact->warnings())
       res.warnings.push_back(w);

@@ -43,6 +43,7 @@ struct Surface {
   std::vector<double> stiffness;  // per segment: K A / diagonal (shell) or K A^2 / V (solid)
   std::vector<double> thickness;  // per segment: shell thickness (0 for solid faces)
   std::vector<char> rigid;        // per segment: on a rigid part
+  std::vector<Index> shell;       // per segment: its shell (numbered across blocks), -1 none
   [[nodiscard]] std::size_t size() const { return area.size(); }
 };
 
@@ -130,15 +131,19 @@ struct ContactBuilder {
   // Segments of the shells and exterior solid faces of the parts marked in `pick`.
   Surface surface_of_parts(const std::vector<char>& pick) {
     Surface s;
-    const auto add = [&](const Index* q, double k_base, double t, bool rigid) {
+    const auto add = [&](const Index* q, double k_base, double t, bool rigid, Index shell) {
       for (int j = 0; j < 4; ++j)
         s.segments.push_back(q[j]);
       s.area.push_back(geo.area(q));
       s.stiffness.push_back(k_base);
       s.thickness.push_back(t);
       s.rigid.push_back(rigid ? 1 : 0);
+      s.shell.push_back(shell);
     };
+    Index shell_base = 0;  // shells numbered across the blocks, in block order
     for (const core::ShellBlock& b : m.shell_blocks) {
+      const Index base = shell_base;
+      shell_base += static_cast<Index>(b.size());
       if (!pick[static_cast<std::size_t>(b.part)])
         continue;
       const double kb = core::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
@@ -148,7 +153,8 @@ struct ContactBuilder {
         double t = 0.0;
         for (int j = 0; j < nn; ++j)
           t += b.thickness[4 * e + static_cast<std::size_t>(j)];
-        add(q, kb * geo.area(q) / geo.diagonal(q), t / nn, rigid_material(b.material));
+        add(q, kb * geo.area(q) / geo.diagonal(q), t / nn, rigid_material(b.material),
+            base + static_cast<Index>(e));
       }
     }
     for (const core::SolidBlock& b : m.solid_blocks) {
@@ -176,7 +182,7 @@ struct ContactBuilder {
           if (!normalise_face(q) || count[sorted_key(q.data())] != 1)
             continue;
           const double a = geo.area(q.data());
-          add(q.data(), v > 0.0 ? kb * a * a / v : 0.0, 0.0, rigid_material(b.material));
+          add(q.data(), v > 0.0 ? kb * a * a / v : 0.0, 0.0, rigid_material(b.material), -1);
         }
       }
     }
@@ -266,6 +272,7 @@ struct ContactBuilder {
         s.stiffness.push_back(model_surface.stiffness[f]);
         s.thickness.push_back(model_surface.thickness[f]);
         s.rigid.push_back(model_surface.rigid[f]);
+        s.shell.push_back(model_surface.shell[f]);
       }
       return s;
     }
@@ -298,6 +305,7 @@ struct ContactBuilder {
     const std::size_t n = m.node_count();
     std::vector<double> area(n, 0.0), stiff(n, 0.0), thick(n, 0.0), count(n, 0.0);
     std::vector<char> rigid(n, 0);
+    std::vector<std::vector<Index>> shells(n);
     for (std::size_t k = 0; k < s.size(); ++k) {
       const Index* q = &s.segments[4 * k];
       const int nn = q[2] == q[3] ? 3 : 4;
@@ -308,8 +316,11 @@ struct ContactBuilder {
         thick[i] += s.thickness[k];
         count[i] += 1.0;
         rigid[i] = static_cast<char>(rigid[i] | s.rigid[k]);
+        if (s.shell[k] >= 0)
+          shells[i].push_back(s.shell[k]);
       }
     }
+    p.slave_shell_start.assign(1, 0);
     std::vector<Index> nodes = only;
     if (nodes.empty()) {
       for (std::size_t i = 0; i < n; ++i)
@@ -330,6 +341,13 @@ struct ContactBuilder {
       p.slave_area.push_back(area[i]);
       p.slave_stiffness.push_back(factor * stiff[i]);
       p.slave_offset.push_back(offset ? 0.5 * (sst > 0.0 ? sst : sfst * t) : 0.0);
+      // Shell nodes only: the offset then follows the mean thickness of those shells.
+      const bool follows = offset && sst <= 0.0 && !shells[i].empty() &&
+                           shells[i].size() == static_cast<std::size_t>(count[i]);
+      p.slave_offset_factor.push_back(follows ? 0.5 * sfst : 0.0);
+      if (follows)
+        p.slave_shells.insert(p.slave_shells.end(), shells[i].begin(), shells[i].end());
+      p.slave_shell_start.push_back(p.slave_shells.size());
     }
     return true;
   }
@@ -341,6 +359,9 @@ struct ContactBuilder {
       const bool offset = !s.rigid[k] || rigid_offset;
       p.segment_offset.push_back(offset ? 0.5 * (mst > 0.0 ? mst : sfmt * s.thickness[k]) : 0.0);
       p.segment_stiffness.push_back(factor * s.stiffness[k]);
+      const bool follows = offset && mst <= 0.0 && s.shell[k] >= 0;
+      p.segment_shell.push_back(follows ? s.shell[k] : -1);
+      p.segment_offset_factor.push_back(follows ? 0.5 * sfmt : 0.0);
     }
   }
 
@@ -373,6 +394,7 @@ struct ContactBuilder {
     const int penopt =
         d.control_contact && d.control_contact->penopt > 0 ? d.control_contact->penopt : 1;
     const int nsbcs = d.control_contact ? d.control_contact->nsbcs : 0;
+    const bool thkchg = d.control_contact && d.control_contact->thkchg == 1;
     for (const model::ContactDesc& c : d.contacts) {
       core::ContactInterface ci;
       ci.id = c.id;
@@ -438,13 +460,18 @@ struct ContactBuilder {
               "none; use a part, part set or segment set, or a ONE_WAY contact");
         continue;
       }
+      // The layer surfaces of a cohesive interface move with the layers' thickness: the
+      // law's gap is between them (else plastic thinning would open the interface).
+      const bool follow = thkchg || ci.cohesive;
       core::ContactPass a;
+      a.offsets_follow_thickness = follow;
       if (!fill_slaves(c, *slave, slave_only, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, a))
         continue;
       fill_master(*master, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, a);
       ci.passes.push_back(std::move(a));
       if (two_way) {
         core::ContactPass b;
+        b.offsets_follow_thickness = follow;
         if (!fill_slaves(c, *master, {}, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, b))
           continue;
         fill_master(*slave, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, b);

@@ -233,7 +233,7 @@ TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {
   const ReadResult r = read_ok(
       "*CONTROL_CONTACT\n"
       "$#  slsfac    rwpnal    islchk    shlthk    penopt    thkchg     orien    enmass\n"
-      "      0.05       1.0         2         2         3         0         4         2\n"
+      "      0.05       1.0         2         2         3         1         4         2\n"
       "$#  usrstr    usrfrc     nsbcs    interm     xpene     ssthk      ecdt   tiedprj\n"
       "         0        32        10         0       1.0         1         1         1\n"
       "$#   sfric     dfric       edc       vfc        th     th_sf    pen_sf     ptscl\n"
@@ -245,6 +245,7 @@ TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {
   EXPECT_DOUBLE_EQ(c.slsfac, 0.05);
   EXPECT_EQ(c.shlthk, 2);
   EXPECT_EQ(c.penopt, 3);
+  EXPECT_EQ(c.thkchg, 1);
   EXPECT_EQ(c.nsbcs, 10);
   EXPECT_DOUBLE_EQ(c.sfric, 0.2);
   EXPECT_DOUBLE_EQ(c.dfric, 0.1);
@@ -258,6 +259,7 @@ TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {
   EXPECT_DOUBLE_EQ(d.model.control_contact->slsfac, 0.1);
   EXPECT_EQ(d.model.control_contact->penopt, 1);
   EXPECT_EQ(d.model.control_contact->shlthk, 0);
+  EXPECT_EQ(d.model.control_contact->thkchg, 0);
   EXPECT_EQ(d.model.control_contact->nsbcs, 0);
   EXPECT_DOUBLE_EQ(d.model.control_contact->sfric, 0.0);
 }
@@ -280,7 +282,7 @@ TEST(ControlContact, FieldsPlyformDoesNotImplementAreNamed) {
   expect_error("*CONTROL_CONTACT\n0.1,0,0,0,5\n", 2, kKw, "PENOPT", "not supported");
   expect_error("*CONTROL_CONTACT\n-0.1\n", 2, kKw, "SLSFAC", ">= 0");
   expect_error("*CONTROL_CONTACT\n0.1,0,0,3\n", 2, kKw, "SHLTHK", "must be one of 0, 1, 2");
-  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,0,1\n", 2, kKw, "THKCHG", "thickness changes");
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,0,2\n", 2, kKw, "THKCHG", "must be one of 0, 1");
   expect_error("*CONTROL_CONTACT\n0.1\n0,0,0,1\n", 3, kKw, "INTERM", "intermittent");
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,1.5\n", 4, kKw, "TH", "*PART_CONTACT");
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,2\n", 4, kKw, "TH_SF", "*PART_CONTACT");

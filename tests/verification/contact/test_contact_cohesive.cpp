@@ -197,3 +197,62 @@ TEST(ContactCohesive, TwoWayContactWithTheCohesiveLawIsALocatedError) {
 
 }  // namespace
 }  // namespace plyform
+
+namespace plyform {
+namespace {
+
+// Two bonded plastic layers stretched together, equibiaxially by 5 %: each thins by about
+// 10 % (plastic incompressibility). The cohesive gap is measured between the layer surfaces
+// as they are now, so the adhesion pulls the free top layer down by the thinning of both
+// half-layers (about 0.1 mm) and the interface stays closed and intact. With the initial
+// thicknesses the interface would not see the surfaces part: the top layer would stay where it
+// was, 0.1 mm (10 g_c) above a bonded surface, with no tension.
+TEST(ContactCohesive, OffsetsFollowTheLayersThinning) {
+  const double end = 2e-3, e = 0.05;
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(end);
+  d.kw("*DATABASE_NODOUT").card(end / 100);
+  d.kw("*PART").kw("bottom").card(1, 1, 1);
+  d.kw("*PART").kw("top").card(2, 1, 1);
+  d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 3).card(1.0, 1.0, 1.0, 1.0);
+  d.kw("*MAT_PIECEWISE_LINEAR_PLASTICITY").card(1, 7.85e-9, 2.0e5, 0.3, 100.0, 100.0);
+  const auto bottom = d.plate(1, 1, 1, 0, 4, 0, 4, 2, 2, 0.0);
+  const auto top = d.plate(2, 1001, 1001, 0, 4, 0, 4, 2, 2, 1.0);
+  d.kw("*DATABASE_HISTORY_NODE").card(top[4]);
+  d.kw("*SET_NODE_LIST").card(1).ids(bottom);
+  d.kw("*SET_NODE_LIST").card(2).ids(top);
+  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 0, 0, 1, 1, 1, 1);
+  d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 0, 0, 1, 1, 1);
+  // u = e x r(t), r a smooth ramp from 0 to 1.
+  d.kw("*DEFINE_CURVE").card(1);
+  for (int i = 0; i <= 20; ++i) {
+    const double s = i / 20.0;
+    d.card(s * end, s * s * (3.0 - 2.0 * s));
+  }
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_NODE");
+  for (const auto* plate : {&bottom, &top}) {
+    for (std::size_t k = 0; k < plate->size(); ++k) {
+      const double x = 2.0 * static_cast<double>(k % 3), y = 2.0 * static_cast<double>(k / 3);
+      d.card((*plate)[k], 1, 2, 1, e * x);
+      d.card((*plate)[k], 2, 2, 1, e * y);
+    }
+  }
+  d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(3, "bonded layers");
+  d.card(2, 1, 3, 3).card(0).card(1, 1);
+  d.kw("*USER_INTERFACE_FRICTION").card(3, 20, 0);
+  d.card(1, kCn, kSmaxLo, kSmaxHi, 100.0, 200.0, 1e-9, 0.0);
+  d.card(0.0, 1.0, 1e-3, 0, 0.2, 0.2, 0.0, 0.0);
+  d.card(0.0, 20.0, 1e-3, 0.0);
+  test::DeckRun r;
+  run_deck(d.text(), r);
+  ASSERT_FALSE(r.cohesive.empty());
+  for (const auto& n : r.cohesive.back().second) {
+    EXPECT_GT(n.beta, 0.99) << "node " << n.node;
+    EXPECT_LT(std::abs(n.gap), kGc) << "node " << n.node;
+  }
+  // The top layer came down by the thinning of both half-layers: about 0.1 mm.
+  EXPECT_LT(r.uz.back().second.at(0), -0.05);
+}
+
+}  // namespace
+}  // namespace plyform

@@ -51,9 +51,9 @@ constexpr std::array kCard1{
     FieldSpec{.name = "THKCHG",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "shell thickness changes in contact: must be 0",
-              .allowed = kZeroOnly,
-              .allowed_note = "thickness changes of shells in contact are not supported yet"},
+              .description = "1: contact offsets follow the current shell thickness (cohesive "
+                             "interfaces always do), 0: the initial thickness",
+              .allowed = kZeroOne},
     FieldSpec{.name = "ORIEN",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -214,6 +214,7 @@ void read_control_contact(KeywordInput& in) {
   desc.slsfac = c1.real("SLSFAC") == 0.0 ? 0.1 : c1.real("SLSFAC");
   desc.shlthk = c1.integer("SHLTHK");
   desc.penopt = c1.integer("PENOPT") == 0 ? 1 : c1.integer("PENOPT");
+  desc.thkchg = c1.integer("THKCHG");
   if (const auto line2 = in.next_line()) {
     const CardValues c2 = in.read(kCards[1], *line2);
     desc.nsbcs = c2.integer("NSBCS");
@@ -262,7 +263,7 @@ KeywordSpec control_contact_keyword() {
           .summary =
               "Defaults of every contact: SLSFAC, PENOPT (1-3), SHLTHK, NSBCS and the default "
               "friction of card 3. Fields about rigid walls, spot welds, erosion, tied or "
-              "single-surface contacts and user routines are read and ignored; THKCHG, INTERM, "
+              "single-surface contacts and user routines are read and ignored; INTERM, "
               "TH, TH_SF, PEN_SF and IGNORE must keep their defaults. Given twice, the last one "
               "is used (with a warning)."};
 }

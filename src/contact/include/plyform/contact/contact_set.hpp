@@ -61,6 +61,11 @@ class ContactSet {
 
   [[nodiscard]] bool empty() const { return passes_.empty(); }
 
+  /// The current thickness of every shell, numbered across the model's shell blocks in order
+  /// (pointers into the engine's shell states, read every cycle): passes whose offsets follow
+  /// the thickness (THKCHG = 1, cohesive interfaces) use it.
+  void follow_shell_thickness(std::vector<const double*> thickness);
+
   /// t = 0: the first search, then initially bonded nodes (BOND_TOL) bond. `packed`: x y z vx
   /// vy vz per node.
   void start(const double* packed);
@@ -88,7 +93,9 @@ class ContactSet {
   const core::Model& model_;
   const std::vector<double>& mass_;
   const unsigned char* rigid_;
+  void follow_thickness(PassRuntime& pr) const;
   std::vector<std::unique_ptr<PassRuntime>> passes_;
+  std::vector<const double*> shell_thickness_;
   std::vector<std::string> warnings_;
   long searches_ = 0;
   double tssfac_ = 0.9;

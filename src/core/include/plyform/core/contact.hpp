@@ -38,6 +38,16 @@ struct ContactPass {
   std::vector<Index> segments;
   std::vector<double> segment_offset;     ///< contact half-thickness [length]
   std::vector<double> segment_stiffness;  ///< SOFT = 0 segment stiffness [force/length]
+  // Offsets that follow the current shell thickness (THKCHG = 1; cohesive interfaces always):
+  // offset = factor * thickness, the thickness of a slave node the mean over its shells.
+  // Shells are numbered across the model's shell blocks in order (block 0 first). A factor of
+  // 0 keeps the fixed offset above (solid faces, SST/MST given, rigid shells).
+  bool offsets_follow_thickness = false;
+  std::vector<Index> segment_shell;            ///< per segment: its shell, -1 for none
+  std::vector<double> segment_offset_factor;   ///< per segment
+  std::vector<std::size_t> slave_shell_start;  ///< CSR per slave node into slave_shells
+  std::vector<Index> slave_shells;
+  std::vector<double> slave_offset_factor;  ///< per slave node
   /// +1 when the slave nodes are the interface's slave side (rcforc sums the force on them),
   /// -1 in the swapped pass of a two-way contact (the master nodes are the slave side then).
   int slave_side_sign = 1;

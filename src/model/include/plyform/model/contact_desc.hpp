@@ -78,6 +78,7 @@ struct ControlContactDesc {
   double slsfac = 0.1;  ///< SLSFAC: penalty scale factor of every contact (a written 0 is 0.1)
   int shlthk = 0;       ///< SHLTHK: shell thickness in non-automatic contacts (see docs)
   int penopt = 1;       ///< PENOPT: 1 min(slave, master), 2 master, 3 slave stiffness
+  int thkchg = 0;       ///< THKCHG: 1 = offsets follow the current shell thickness
   int nsbcs = 0;        ///< NSBCS: cycles between bucket sorts (0: automatic)
   double sfric = 0.0;   ///< SFRIC: default static friction (contacts with FS = 0)
   double dfric = 0.0;   ///< DFRIC: default dynamic friction
