@@ -6,41 +6,16 @@
 
 #include <gtest/gtest.h>
 
+#include "deck_text_checks.hpp"
 #include "plyform/keyword/read_deck.hpp"
 
 namespace plyform::keyword {
 namespace {
 
+using namespace test;  // read_ok, single_error, expect_error, ...
+
 using model::ContactKind;
 using model::ContactSideType;
-
-std::string all_errors(const ReadResult& result) {
-  std::string out;
-  for (const Diagnostic& d : result.errors) {
-    out += d.to_string() + "\n";
-  }
-  return out;
-}
-
-ReadResult read_ok(std::string_view text) {
-  ReadResult result = read_deck_text(text, "deck.k");
-  EXPECT_TRUE(result.ok()) << all_errors(result);
-  return result;
-}
-
-/// Expects one error at `line` on `field` of `keyword` whose message contains `part`.
-void expect_error(std::string_view deck, int line, std::string_view keyword, std::string_view field,
-                  std::string_view part) {
-  SCOPED_TRACE(std::string(deck));
-  const ReadResult result = read_deck_text(deck, "deck.k");
-  ASSERT_EQ(result.errors.size(), 1u) << all_errors(result);
-  const Diagnostic& d = result.errors.front();
-  EXPECT_EQ(d.where.file, "deck.k");
-  EXPECT_EQ(d.where.line, line);
-  EXPECT_EQ(d.keyword, keyword);
-  EXPECT_EQ(d.field, field);
-  EXPECT_NE(d.message.find(part), std::string::npos) << d.to_string();
-}
 
 // --- *CONTACT_
 

@@ -5,46 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "deck_text_checks.hpp"
 #include "plyform/keyword/read_deck.hpp"
 
 namespace plyform::keyword {
 namespace {
 
-std::string all_errors(const ReadResult& result) {
-  std::string out;
-  for (const Diagnostic& d : result.errors) {
-    out += d.to_string() + "\n";
-  }
-  return out;
-}
-
-ReadResult read_ok(std::string_view text) {
-  ReadResult result = read_deck_text(text, "deck.k");
-  EXPECT_TRUE(result.ok()) << all_errors(result);
-  return result;
-}
-
-Diagnostic single_error(std::string_view text) {
-  const ReadResult result = read_deck_text(text, "deck.k");
-  EXPECT_EQ(result.errors.size(), 1u) << all_errors(result);
-  return result.errors.empty() ? Diagnostic{} : result.errors.front();
-}
-
-bool contains(const std::string& text, std::string_view part) {
-  return text.find(part) != std::string::npos;
-}
-
-/// Expects one error at `line` on `field` of `keyword` whose message contains `part`.
-void expect_error(std::string_view deck, int line, std::string_view keyword, std::string_view field,
-                  std::string_view part) {
-  SCOPED_TRACE(std::string(deck));
-  const Diagnostic d = single_error(deck);
-  EXPECT_EQ(d.where.file, "deck.k");
-  EXPECT_EQ(d.where.line, line);
-  EXPECT_EQ(d.keyword, keyword);
-  EXPECT_EQ(d.field, field);
-  EXPECT_TRUE(contains(d.message, part)) << d.to_string();
-}
+using namespace test;  // read_ok, single_error, expect_error, ...
 
 TEST(ElementShell, FixedAndFreeFormatQuadsAndTriangles) {
   const ReadResult r = read_ok(

@@ -3,24 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include "deck_text_checks.hpp"
 #include "plyform/keyword/read_deck.hpp"
 
 namespace plyform::keyword {
 namespace {
 
-Diagnostic single_error(std::string_view text) {
-  const ReadResult result = read_deck_text(text, "deck.k");
-  std::string all;
-  for (const Diagnostic& d : result.errors) {
-    all += d.to_string() + "\n";
-  }
-  EXPECT_EQ(result.errors.size(), 1u) << all;
-  return result.errors.empty() ? Diagnostic{} : result.errors.front();
-}
-
-bool contains(const std::string& text, std::string_view part) {
-  return text.find(part) != std::string::npos;
-}
+using namespace test;  // read_ok, single_error, expect_error, ...
 
 TEST(SolverKeywordErrors, BadNumberInNode) {
   const Diagnostic d = single_error("*KEYWORD\n*NODE\n       1             abc\n");

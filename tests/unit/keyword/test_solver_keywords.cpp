@@ -3,24 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include "deck_text_checks.hpp"
 #include "plyform/keyword/read_deck.hpp"
 
 namespace plyform::keyword {
 namespace {
 
-std::string all_errors(const ReadResult& result) {
-  std::string out;
-  for (const Diagnostic& d : result.errors) {
-    out += d.to_string() + "\n";
-  }
-  return out;
-}
-
-ReadResult read_ok(std::string_view text) {
-  ReadResult result = read_deck_text(text, "deck.k");
-  EXPECT_TRUE(result.ok()) << all_errors(result);
-  return result;
-}
+using namespace test;  // read_ok, single_error, expect_error, ...
 
 TEST(SolverKeywords, NodeFixedWidthsAndFreeFormat) {
   const ReadResult r = read_ok(
