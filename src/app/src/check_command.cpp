@@ -166,6 +166,30 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
   }
   fmt::print(out, "constraints: {} fixed nodes/dofs, {} prescribed motions, {} nodal loads\n",
              m.fixed.size(), m.motions.size(), m.loads.size());
+  // What the build made of each contact: the sides as slave nodes and master segments, with
+  // their offsets and SOFT = 0 penalty (docs/contact.md).
+  for (const core::ContactInterface& c : m.contacts) {
+    for (std::size_t p = 0; p < c.passes.size(); ++p) {
+      const core::ContactPass& cp = c.passes[p];
+      const auto range = [](const std::vector<double>& v) {
+        if (v.empty())
+          return std::string("-");
+        const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+        const std::string a = fmt::format("{:.4g}", *lo), b = fmt::format("{:.4g}", *hi);
+        return a == b ? a : a + "-" + b;
+      };
+      std::vector<double> k_area(cp.slave_count());
+      for (std::size_t i = 0; i < k_area.size(); ++i)
+        k_area[i] = cp.slave_stiffness[i] / cp.slave_area[i];
+      fmt::print(out,
+                 "  contact {} pass {}: {} slave nodes against {} segments; offsets slave {}, "
+                 "master {}{}; slave penalty per area {} (SOFT {})\n",
+                 c.id, p + 1, cp.slave_count(), cp.segment_count(), range(cp.slave_offset),
+                 range(cp.segment_offset),
+                 cp.offsets_follow_thickness ? " (following the thickness)" : "", range(k_area),
+                 c.penalty == core::PenaltyKind::mass ? 1 : 0);
+    }
+  }
   fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
   if (dt_min < 1e300) {
     const double dt = m.controls.tssfac * dt_min;
