@@ -10,6 +10,8 @@ and writes next to them:
   nodout.csv   -> nodout.png    per history node: displacement and velocity components
   rcforc.csv   -> rcforc.png    per contact interface: resultant force components
   cohesive.csv -> cohesive.png  gap, pressure, shear and beta of the cohesive history nodes
+  interface_energy.csv -> interface_energy.png  per interface: the contact work and the law's
+                  energy books (stored, damage, viscous, friction, damping; healing)
 glstat.csv is required; the others are plotted when present. Exit status 0 on success, 1 when
 OUTDIR or glstat.csv is missing or a file cannot be read, 2 on a usage error.
 """
@@ -212,6 +214,36 @@ def plot_cohesive(outdir, title):
     return target
 
 
+def plot_interface_energy(outdir, title):
+    """Each interface's work next to the law's books: work = stored + damage + viscous +
+    friction + damping (docs/contact.md); healing restored adhesion without work."""
+    path = os.path.join(outdir, "interface_energy.csv")
+    books = ["stored", "damage", "viscous", "friction", "damping"]
+    names = ["work"] + books + ["healing"]
+    cols = read_table(path, ["time", "interface"] + names)
+    d = {n: floats(cols[n], path, n) for n in ["time"] + names}
+    groups = group(cols, ["interface"], path)
+    if not groups:
+        fail(f"{path} has no rows")
+    n = len(groups)
+    fig, axes = plt.subplots(n, 1, figsize=(8.0, 1.2 + 2.6 * n), sharex=True,
+                             layout="constrained", squeeze=False)
+    for ax, (key, idx) in zip(axes[:, 0], groups.items()):
+        idx = np.array(idx)
+        t = d["time"][idx]
+        ax.stackplot(t, *[d[b][idx] for b in books], labels=books, alpha=0.6)
+        ax.plot(t, d["work"][idx], color="k", lw=1.4, label="work of the contact forces")
+        ax.plot(t, d["healing"][idx], color="k", lw=1.0, ls="--", label="healing")
+        style(ax, ylabel=f"interface {key[0]}\nenergy")
+        ax.legend(fontsize=7, frameon=False, ncol=2, loc="upper left")
+    axes[-1][0].set_xlabel("time")
+    fig.suptitle(title + "  interface energy: work and the law's books", fontsize=10)
+    target = os.path.join(outdir, "interface_energy.png")
+    fig.savefig(target, dpi=120)
+    plt.close(fig)
+    return target
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "--help"):
         print(__doc__, file=sys.stderr)
@@ -234,7 +266,8 @@ def main(argv):
     plt.rcParams.update({"font.size": 9})
     written = [plot_energies(outdir, title)]
     for name, plot in (("nodout.csv", plot_nodout), ("rcforc.csv", plot_rcforc),
-                       ("cohesive.csv", plot_cohesive)):
+                       ("cohesive.csv", plot_cohesive),
+                       ("interface_energy.csv", plot_interface_energy)):
         if os.path.isfile(os.path.join(outdir, name)):
             written.append(plot(outdir, title))
         elif name == "nodout.csv":
