@@ -18,11 +18,12 @@ constexpr std::size_t kStride = 6;  // packed node data: x y z vx vy vz
 
 // Sums of per-slave values in fixed chunks, then the chunks in order: the same bits for any
 // number of threads.
+// `part`: a buffer kept by the caller (no allocation per cycle once it has grown).
 template <class F>
-double chunked_sum(std::size_t n, F&& f) {
+double chunked_sum(std::size_t n, std::vector<double>& part, F&& f) {
   constexpr std::size_t kChunk = 1024;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<double> part(chunks, 0.0);
+  part.resize(chunks);
 #pragma omp parallel for schedule(static)
   for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
     const auto c = static_cast<std::size_t>(lc);
@@ -81,6 +82,7 @@ struct PassRuntime {
   std::vector<double> pressure, tau_x, tau_y, stored;
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
+  std::vector<double> chunk_sums;  // buffer of chunked_sum
   double work = 0.0;
   std::array<double, 3> resultant{}, master_resultant{};
   double dt0 = 0.0;
@@ -592,7 +594,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       }
       pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
-    pr.work += chunked_sum(ns, [&](std::size_t k) { return pr.work_part[k]; });
+    pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
 
     // Scatter in slave order: each node receives its contributions in the same order for any
     // number of threads.
