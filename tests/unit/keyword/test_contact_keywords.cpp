@@ -145,8 +145,17 @@ TEST(Contact, FieldsPlyformDoesNotImplementAreNamed) {
                "SOFT = 2");
   expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n0,0,0,0,0,0,0,2\n", 5, kKw,
                "FRCFRQ", "every cycle");
-  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n0.0,0,0\n", 6, kKw, "",
-               "optional cards B.. (PENMAX THKOPT ...) are not supported");
+  // Optional cards B-D: read at LS-DYNA's defaults only, each other value named.
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n0.5,0,0\n", 6, kKw, "PENMAX",
+               "maximum penetration distance");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n0,0,0,2\n", 6, kKw, "SNLOG",
+               "only 0 and 1");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n1,1\n", 7, kKw, "IGNORE",
+               "initial penetrations");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n\n0,0,0,0,0,0,0,1\n", 8, kKw,
+               "SHLEDG", "shell edge");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n\n\n1\n", 9, kKw, "",
+               "optional cards E.. (SHAREC CPARM8 ...) are not supported");
   expect_error("*CONTACT_SURFACE_TO_SURFACE_ID\n3\n", 1, "*CONTACT_SURFACE_TO_SURFACE_ID", "",
                "missing card 1");
   expect_error("*CONTACT_SURFACE_TO_SURFACE_ID\n-3\n1,2,3,3\n", 2, "*CONTACT_SURFACE_TO_SURFACE_ID",
@@ -200,6 +209,21 @@ TEST(SetSegment, Errors) {
   expect_error("*SET_SEGMENT\n1,0,0,0,0,THERMAL\n1,2,3\n", 2, "*SET_SEGMENT", "SOLVER",
                "not supported");
   expect_error("*SET_SEGMENT\n0\n1,2,3\n", 2, "*SET_SEGMENT", "SID", "");
+}
+
+TEST(Contact, OptionalCardsBToDAtTheirDefaultsAreRead) {
+  const ReadResult r = read_ok(
+      "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE\n"
+      "         1         2         3         3         0         0         1         1\n"
+      "     0.125       0.0       0.0       0.0      20.0         0       0.0       0.0\n"
+      "       1.0       1.0       0.0       0.0       1.0       1.0       1.0       1.0\n"
+      "         0       0.1         0     1.025         2         2       100         1\n"
+      "       0.0         0         0         1         0         0       0.0       0.0\n"
+      "         1         0       0.0       0.0       0.0                 0.0         0\n"
+      "         0       0.0       0.0       0.0       0.0         0         0         0\n");
+  ASSERT_EQ(r.model.contacts.size(), 1u);
+  EXPECT_EQ(r.model.contacts[0].bsort, 100);
+  EXPECT_DOUBLE_EQ(r.model.contacts[0].fs, 0.125);
 }
 
 // --- *CONTROL_CONTACT

@@ -20,6 +20,14 @@ constexpr std::array kPrintFlags{0, 1, 2};
 constexpr std::array kSofts{0, 1};
 constexpr std::array kSegmentOptions{0, 2};
 constexpr std::array kFrcfrqs{0, 1};
+constexpr std::array kZeroOrOne{0, 1};
+constexpr std::array kIgaps{0, 1, 2};
+
+// A field of optional cards B-D that plyform reads only at LS-DYNA's default (LS-PrePost writes
+// these cards with their defaults): anything else is an error naming it.
+constexpr FieldSpec default_only(std::string_view name, FieldType type, std::string_view what) {
+  return FieldSpec{.name = name, .type = type, .unit = "-", .description = what};
+}
 
 constexpr std::array kIdFields{
     FieldSpec{.name = "CID",
@@ -210,6 +218,53 @@ constexpr std::array kCardA{
               .allowed_note = "contact forces are updated every cycle"},
 };
 
+constexpr std::array kCardB{
+    default_only("PENMAX", FieldType::kReal, "maximum penetration distance: must be 0"),
+    default_only("THKOPT", FieldType::kInteger, "thickness option: must be 0"),
+    default_only("SHLTHK", FieldType::kInteger,
+                 "per-contact SHLTHK (with THKOPT = 1 only): must be 0"),
+    FieldSpec{.name = "SNLOG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "shooting-node logic: 0 or 1 (plyform has none to disable)",
+              .allowed = kZeroOrOne,
+              .allowed_note = "only 0 and 1 exist"},
+    default_only("ISYM", FieldType::kInteger, "symmetry plane option: must be 0"),
+    default_only("I2D3D", FieldType::kInteger, "2D/3D segment search option: must be 0"),
+    default_only("SLDTHK", FieldType::kReal, "solid element contact thickness: must be 0"),
+    default_only("SLDSTF", FieldType::kReal, "solid element contact stiffness: must be 0"),
+};
+
+constexpr std::array kCardC{
+    FieldSpec{.name = "IGAP",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "implicit convergence option: 0, 1 or 2, read and without effect "
+                             "in an explicit run",
+              .allowed = kIgaps,
+              .allowed_note = "IGAP takes 0, 1 or 2"},
+    default_only("IGNORE", FieldType::kInteger,
+                 "initial penetrations tracked instead of pushed out: must be 0"),
+    default_only("DPRFAC", FieldType::kReal, "penetration reduction factor (SOFT = 2): must be 0"),
+    default_only("DTSTIF", FieldType::kReal, "time step of the SOFT = 1 stiffness: must be 0"),
+    default_only("EDGEK", FieldType::kReal, "edge stiffness scale (SOFT = 2): must be 0"),
+    default_only("UNUSED", FieldType::kReal, "not used by LS-DYNA: blank or 0"),
+    default_only("FLANGL", FieldType::kReal, "angle tolerance (SOFT = 2): must be 0"),
+    default_only("CID_RCF", FieldType::kInteger,
+                 "coordinate system of the rcforc output: must be 0 (global axes)"),
+};
+
+constexpr std::array kCardD{
+    default_only("Q2TRI", FieldType::kInteger, "quadrilaterals split into triangles: must be 0"),
+    default_only("DTPCHK", FieldType::kReal, "time step of the penetration check: must be 0"),
+    default_only("SFNBR", FieldType::kReal, "neighbour segment stiffness scale: must be 0"),
+    default_only("FNLSCL", FieldType::kReal, "nonlinear penalty scale: must be 0"),
+    default_only("DNLSCL", FieldType::kReal, "nonlinear penalty depth: must be 0"),
+    default_only("TCSO", FieldType::kInteger, "segment orientation option: must be 0"),
+    default_only("TIEDID", FieldType::kInteger, "tied incremental option: must be 0"),
+    default_only("SHLEDG", FieldType::kInteger, "shell edge option: must be 0"),
+};
+
 constexpr std::array kCards{
     CardSpec{.title = "ID card", .fields = kIdFields, .presence = "with _ID or _TITLE only"},
     CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
@@ -219,10 +274,29 @@ constexpr std::array kCards{
     CardSpec{.title = "Card 3",
              .fields = kCard3,
              .presence = "optional at the end of the keyword; defaults when left out"},
-    CardSpec{.title = "Optional card A",
-             .fields = kCardA,
-             .presence = "optional; cards B and after are not supported"},
+    CardSpec{.title = "Optional card A", .fields = kCardA, .presence = "optional"},
+    CardSpec{.title = "Optional card B",
+             .fields = kCardB,
+             .presence = "optional; read at LS-DYNA's defaults only"},
+    CardSpec{.title = "Optional card C",
+             .fields = kCardC,
+             .presence = "optional; read at LS-DYNA's defaults only"},
+    CardSpec{.title = "Optional card D",
+             .fields = kCardD,
+             .presence = "optional; read at LS-DYNA's defaults only; cards E and after are not "
+                         "supported"},
 };
+
+/// Optional cards B-D: every field must keep its default (the table says which values count).
+void read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& line) {
+  const CardValues v = in.read(card, line);
+  for (const FieldSpec& f : card.fields) {
+    if (!f.allowed.empty())
+      continue;  // checked by the table
+    const double value = f.type == FieldType::kInteger ? v.integer(f.name) : v.real(f.name);
+    require_zero(in, line.line, f.name, value, f.description);
+  }
+}
 
 /// A written 0 (or blank) means LS-DYNA's default for these fields.
 double zero_means(double value, double fallback) {
@@ -287,11 +361,15 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     c.bsort = a.integer("BSORT");
     require_zero(in, line_a->line, "LCIDAB", a.integer("LCIDAB"), "an airbag curve");
   }
+  for (std::size_t k = 5; k < kCards.size(); ++k) {
+    if (const auto line = in.next_line())
+      read_default_card(in, kCards[k], *line);
+  }
   if (has_more_cards(in)) {
     const auto extra = in.next_nonblank_line();
     in.fail(extra->line, "",
-            "optional cards B.. (PENMAX THKOPT ...) are not supported; end the keyword after "
-            "optional card A");
+            "optional cards E.. (SHAREC CPARM8 ...) are not supported; end the keyword after "
+            "optional card D");
   }
   in.model().contacts.push_back(std::move(c));
 }
@@ -310,8 +388,9 @@ KeywordSpec contact_one_way_surface_to_surface_keyword() {
               "Penalty contact of the slave nodes against the master segments (one way)."
               " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
               "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an "
-              "error. Cards 2, 3 and optional card A may be left out at the end; optional cards B "
-              "and after, boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+              "error. Cards 2, 3 and optional cards A-D may be left out at the end (B-D only at "
+              "LS-DYNA's defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves "
+              "are errors."};
 }
 
 KeywordSpec contact_surface_to_surface_keyword() {
@@ -325,8 +404,8 @@ KeywordSpec contact_surface_to_surface_keyword() {
           "nodes against slave segments."
           " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
           "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an error. "
-          "Cards 2, 3 and optional card A may be left out at the end; optional cards B and after, "
-          "boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+          "Cards 2, 3 and optional cards A-D may be left out at the end (B-D only at LS-DYNA's "
+          "defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
 }
 
 KeywordSpec contact_forming_one_way_surface_to_surface_keyword() {
@@ -342,8 +421,9 @@ KeywordSpec contact_forming_one_way_surface_to_surface_keyword() {
               "(master)."
               " SSID/MSID name the slave and master sides by SSTYP/MSTYP: 0 segment set "
               "(*SET_SEGMENT), 2 part set, 3 part, 4 node set (slave side only); 0 (all) is an "
-              "error. Cards 2, 3 and optional card A may be left out at the end; optional cards B "
-              "and after, boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+              "error. Cards 2, 3 and optional cards A-D may be left out at the end (B-D only at "
+              "LS-DYNA's defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves "
+              "are errors."};
 }
 
 KeywordSpec contact_automatic_surface_to_surface_keyword() {
@@ -359,8 +439,9 @@ KeywordSpec contact_automatic_surface_to_surface_keyword() {
               "and rules of *CONTACT_SURFACE_TO_SURFACE. SSID/MSID name the slave and "
               "master sides by SSTYP/MSTYP: 0 segment set (*SET_SEGMENT), 2 part set, 3 "
               "part, 4 node set (slave side only); 0 (all) is an error. Cards 2, 3 and "
-              "optional card A may be left out at the end; optional cards B and after, "
-              "boxes, PENCHK, SOFT = 2 and airbag curves are errors."};
+              "optional cards A-D may be left out at the end (B-D only at LS-DYNA's "
+              "defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves are "
+              "errors."};
 }
 
 }  // namespace plyform::keyword
