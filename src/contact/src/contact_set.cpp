@@ -78,7 +78,7 @@ struct PassRuntime {
   std::vector<double> shape, prev_shape;  // 4 each
   std::vector<double> frame;              // 9 each: normal (slave side), e1, e2
   std::vector<signed char> side;
-  std::vector<double> gap, slip_x, slip_y, temperature, k_normal, k_tangent, area, m_eff;
+  std::vector<double> gap, slip_x, slip_y, temperature, k_normal, k_tangent, m_eff;
   std::vector<double> pressure, tau_x, tau_y, stored;
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
@@ -164,7 +164,6 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
            {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal, &pr->k_tangent,
             &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y, &pr->stored, &pr->work_part})
         v->assign(ns, 0.0);
-      pr->area = cp.slave_area;
       pr->force.assign(3 * ns, 0.0);
       pr->prev_force.assign(3 * ns, 0.0);
       passes_.push_back(std::move(pr));
@@ -539,7 +538,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     in.temperature = pr.temperature.data();
     in.k_normal = pr.k_normal.data();
     in.k_tangent = pr.k_tangent.data();
-    in.area = pr.area.data();
+    in.area = cp.slave_area.data();
     in.mass = pr.m_eff.data();
     in.dt = dt;
     // The law is immutable and every node's update independent: chunks of the batch run in

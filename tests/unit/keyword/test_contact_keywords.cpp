@@ -226,6 +226,14 @@ TEST(Contact, OptionalCardsBToDAtTheirDefaultsAreRead) {
   EXPECT_DOUBLE_EQ(r.model.contacts[0].fs, 0.125);
 }
 
+TEST(Contact, InterfaceForceFileRequestIsWarnedAbout) {
+  const ReadResult r = read_ok("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3,0,0,1,0\n");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].field, "SPR");
+  EXPECT_EQ(r.warnings[0].where.line, 2);
+  EXPECT_NE(r.warnings[0].message.find("rcforc.csv"), std::string::npos);
+}
+
 // --- *CONTROL_CONTACT
 
 TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {

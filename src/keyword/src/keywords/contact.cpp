@@ -5,6 +5,7 @@
 // not implement must keep their defaults: each other value is an error naming the field.
 
 #include <array>
+#include <utility>
 
 #include "../keyword_registry.hpp"
 #include "common_cards.hpp"
@@ -81,14 +82,16 @@ constexpr std::array kCard1{
     FieldSpec{.name = "SPR",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "slave side in LS-DYNA's interface force file (0-2); kept as "
-                             "written",
+              .description = "slave side in LS-DYNA's interface force file (0-2); plyform "
+                             "writes no such file (rcforc.csv has the resultants): a non-zero "
+                             "value gets a warning",
               .allowed = kPrintFlags},
     FieldSpec{.name = "MPR",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "master side in LS-DYNA's interface force file (0-2); kept as "
-                             "written",
+              .description = "master side in LS-DYNA's interface force file (0-2); plyform "
+                             "writes no such file (rcforc.csv has the resultants): a non-zero "
+                             "value gets a warning",
               .allowed = kPrintFlags},
 };
 
@@ -325,6 +328,13 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   c.mstyp = static_cast<model::ContactSideType>(c1.integer("MSTYP"));
   c.spr = c1.integer("SPR");
   c.mpr = c1.integer("MPR");
+  for (const auto& [field, value] : {std::pair{"SPR", c.spr}, std::pair{"MPR", c.mpr}}) {
+    if (value != 0) {
+      in.warn(line1->line, field,
+              "the interface force file (intfor) is not written; rcforc.csv holds the "
+              "contact's resultant force");
+    }
+  }
   require_zero(in, line1->line, "SBOXID", c1.integer("SBOXID"), "a box of the slave side");
   require_zero(in, line1->line, "MBOXID", c1.integer("MBOXID"), "a box of the master side");
 
