@@ -240,7 +240,9 @@ TEST(CheckCommand, RealDecksAreAcceptedOrRejectedWithLocatedErrors) {
     }
     EXPECT_GT(errors, 0) << path;
   }
-  EXPECT_EQ(decks, 29);
+  // The manifest grows as decks are added (its README counts them); at least the 29 the suite
+  // was written against are there.
+  EXPECT_GE(decks, 29);
 }
 
 }  // namespace

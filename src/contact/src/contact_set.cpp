@@ -87,6 +87,21 @@ struct PassRuntime {
   std::array<double, 3> resultant{}, master_resultant{};
   double dt0 = 0.0;
   bool need_mass = false;  // the effective mass matters: damping (VDC) or SOFT = 1
+  // Offset surfaces of shell layers: the master surface is the mid-surface moved by its offset
+  // along the nodal normals (continuous from segment to segment), a slave node's surface point
+  // its position moved by its offset along its own nodal normal. Nodal normals are the mean of
+  // the faces around the node, each turned to agree with the node's first face.
+  bool master_offsets = false;              // some segment has a non-zero offset
+  std::vector<core::Index> master_nodes;    // the distinct segment nodes
+  std::vector<core::Index> corner;          // per segment corner: index into master_nodes
+  std::vector<std::size_t> node_seg_start;  // CSR master node -> segments around it
+  std::vector<core::Index> node_seg;
+  // Directors: the nodal normals at t = 0, then turned with their nodes' rotations, so that
+  // the offset surfaces are functions of the nodes' freedoms (positions and rotations) and the
+  // forces and moments on them are exactly the gradient of the interface's energy.
+  std::vector<double> master_normal;  // 3 per master node
+  std::vector<double> slave_normal;   // 3 per slave node (zero: none, the contact normal is used)
+  std::vector<double> rs, prev_rs;    // 3 per slave: its surface point minus the node
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -166,6 +181,44 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         v->assign(ns, 0.0);
       pr->force.assign(3 * ns, 0.0);
       pr->prev_force.assign(3 * ns, 0.0);
+      pr->rs.assign(3 * ns, 0.0);
+      pr->slave_normal.assign(3 * ns, 0.0);
+      pr->prev_rs.assign(3 * ns, 0.0);
+      for (double o : cp.segment_offset)
+        pr->master_offsets = pr->master_offsets || o > 0.0;
+      if (cp.offsets_follow_thickness) {
+        for (double f : cp.segment_offset_factor)
+          pr->master_offsets = pr->master_offsets || f > 0.0;
+      }
+      if (pr->master_offsets) {
+        std::vector<core::Index> local(model.node_count(), -1);
+        pr->corner.resize(cp.segments.size());
+        std::vector<std::size_t> count;
+        for (std::size_t c = 0; c < cp.segments.size(); ++c) {
+          const auto node = static_cast<std::size_t>(cp.segments[c]);
+          if (local[node] < 0) {
+            local[node] = static_cast<core::Index>(pr->master_nodes.size());
+            pr->master_nodes.push_back(cp.segments[c]);
+            count.push_back(0);
+          }
+          pr->corner[c] = local[node];
+          // A triangle's repeated corner counts once.
+          if (c % 4 != 3 || cp.segments[c] != cp.segments[c - 1])
+            ++count[static_cast<std::size_t>(local[node])];
+        }
+        pr->node_seg_start.assign(pr->master_nodes.size() + 1, 0);
+        for (std::size_t i = 0; i < count.size(); ++i)
+          pr->node_seg_start[i + 1] = pr->node_seg_start[i] + count[i];
+        pr->node_seg.resize(pr->node_seg_start.back());
+        std::vector<std::size_t> fill(pr->node_seg_start.begin(), pr->node_seg_start.end() - 1);
+        for (std::size_t c = 0; c < cp.segments.size(); ++c) {
+          if (c % 4 == 3 && cp.segments[c] == cp.segments[c - 1])
+            continue;
+          const auto i = static_cast<std::size_t>(pr->corner[c]);
+          pr->node_seg[fill[i]++] = static_cast<core::Index>(c / 4);
+        }
+        pr->master_normal.assign(3 * pr->master_nodes.size(), 0.0);
+      }
       passes_.push_back(std::move(pr));
     }
   }
@@ -176,6 +229,10 @@ ContactSet::~ContactSet() = default;
 
 void ContactSet::follow_shell_thickness(std::vector<const double*> thickness) {
   shell_thickness_ = std::move(thickness);
+}
+
+void ContactSet::follow_rotations(const Rotations& rotations) {
+  rot_ = rotations;
 }
 
 void ContactSet::follow_thickness(PassRuntime& pr) const {
@@ -212,51 +269,182 @@ const double* at(const double* packed, core::Index node) {
   return packed + kStride * static_cast<std::size_t>(node);
 }
 
-// `guess`: shape functions of an earlier projection on the same segment (null: start at the
-// centre); the Gauss-Newton iteration then usually converges in one or two steps.
-SegmentPoint project(const core::ContactPass& cp, core::Index s, const double* p,
-                     const double* packed, const double* guess = nullptr) {
-  const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
-  if (q[2] == q[3])
-    return project_triangle(p, at(packed, q[0]), at(packed, q[1]), at(packed, q[2]));
-  const double* c[4] = {at(packed, q[0]), at(packed, q[1]), at(packed, q[2]), at(packed, q[3])};
-  if (guess == nullptr)
-    return project_quad(p, c);
-  // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
-  return project_quad(p, c, guess[1] + guess[2] - guess[0] - guess[3],
-                      guess[2] + guess[3] - guess[0] - guess[1]);
+// Unit normal of a segment's mid-surface (N1 N2 N3 right hand), from its corner positions:
+// the cross product of the diagonals (of the two edges at N1 for a triangle).
+void segment_normal(const core::Index* q, const double* packed, double n[3]) {
+  const double *c0 = at(packed, q[0]), *c1 = at(packed, q[1]), *c2 = at(packed, q[2]),
+               *c3 = at(packed, q[3]);
+  double a[3], b[3];
+  for (int d = 0; d < 3; ++d) {
+    a[d] = c2[d] - c0[d];
+    b[d] = q[2] == q[3] ? c2[d] - c1[d] : c3[d] - c1[d];
+  }
+  if (q[2] == q[3]) {
+    for (int d = 0; d < 3; ++d)
+      a[d] = c1[d] - c0[d], b[d] = c2[d] - c0[d];
+  }
+  n[0] = a[1] * b[2] - a[2] * b[1];
+  n[1] = a[2] * b[0] - a[0] * b[2];
+  n[2] = a[0] * b[1] - a[1] * b[0];
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double inv = len > 0.0 ? 1.0 / len : 0.0;
+  n[0] *= inv, n[1] *= inv, n[2] *= inv;
 }
 
-// The segment of slave k: its current one while the projection stays inside it, else the
-// nearest candidate whose projection is at most MAXPAR - 1 outside (parametric measure).
-core::Index locate(const PassRuntime& pr, std::size_t k, const double* packed, SegmentPoint& best) {
+// Mean of the normals of `count` faces (4 node indices each, listed by `index`), each turned to
+// agree with the first, normalised; zero when there are none. The normals are summed in a fixed
+// (sorted) order, so the result does not depend on how a side lists its faces.
+template <class FaceOf>
+void mean_normal(std::size_t count, FaceOf&& face, const double* packed, double out[3]) {
+  out[0] = out[1] = out[2] = 0.0;
+  std::vector<std::array<double, 3>> normals(count);
+  for (std::size_t f = 0; f < count; ++f)
+    segment_normal(face(f), packed, normals[f].data());
+  std::sort(normals.begin(), normals.end());
+  for (const auto& n : normals) {
+    const double* first = normals.front().data();
+    const double sg = n[0] * first[0] + n[1] * first[1] + n[2] * first[2] < 0.0 ? -1.0 : 1.0;
+    out[0] += sg * n[0], out[1] += sg * n[1], out[2] += sg * n[2];
+  }
+  const double len = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+  if (len > 0.0)
+    out[0] /= len, out[1] /= len, out[2] /= len;
+}
+
+// Turns a unit director d by the rotation vector phi (Rodrigues: exact for any angle).
+inline void turn_director(double px, double py, double pz, double* d) {
+  const double a2 = px * px + py * py + pz * pz;
+  if (!(a2 > 0.0))
+    return;
+  const double a = std::sqrt(a2);
+  const double s1 = std::sin(a) / a, c1 = (1.0 - std::cos(a)) / a2;
+  const double cx = py * d[2] - pz * d[1], cy = pz * d[0] - px * d[2], cz = px * d[1] - py * d[0];
+  const double ccx = py * cz - pz * cy, ccy = pz * cx - px * cz, ccz = px * cy - py * cx;
+  d[0] += s1 * cx + c1 * ccx;
+  d[1] += s1 * cy + c1 * ccy;
+  d[2] += s1 * cz + c1 * ccz;
+}
+
+// The offset vector of a node of offset `o` along its nodal normal `nn`, turned to the side
+// `n` points to (zero for a zero offset or no normal).
+inline void offset_vector(double o, const double* nn, const double* n, double r[3]) {
+  const double sg = nn[0] * n[0] + nn[1] * n[1] + nn[2] * n[2] < 0.0 ? -o : o;
+  r[0] = sg * nn[0], r[1] = sg * nn[1], r[2] = sg * nn[2];
+}
+
+/// A slave node against one segment: the projection of its surface point on the segment's
+/// offset surface, the side it is on, and where that surface point lies.
+struct Located {
+  SegmentPoint sp;  // on the offset surface: distance = signed gap along the segment normal
+  signed char side = 0;
+  double rs[3] = {0, 0, 0};  // slave surface point minus the slave node
+};
+
+// Projects slave k on segment s. The side: the node's own while it is in contact or bonded;
+// a free node (approaching, detached) takes the side its mid-surface is on once it is clear of
+// both surfaces, or when it had no segment last cycle (it cannot have come through). `guess`:
+// shape functions of an earlier projection on the same segment (warm start), or null.
+Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool free, bool was_located,
+                   const double* packed, const double* guess) {
   const core::ContactPass& cp = *pr.pass;
+  const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
   const double* p = at(packed, cp.slave_nodes[k]);
+  const double om = pr.seg_offset[static_cast<std::size_t>(s)];
+  const double os = pr.slave_offset[k];
+  double ns[3];
+  segment_normal(q, packed, ns);
+  Located L;
+  {
+    // Distance of the node from the segment's mid plane (through its centroid).
+    double dm = 0.0;
+    const int nn = q[2] == q[3] ? 3 : 4;
+    for (int d = 0; d < 3; ++d) {
+      double c = 0.0;
+      for (int j = 0; j < nn; ++j)
+        c += at(packed, q[j])[d];
+      dm += (p[d] - c / nn) * ns[d];
+    }
+    signed char side = pr.side[k];
+    if (side == 0 || (free && (!was_located || std::fabs(dm) > os + om)))
+      side = dm >= 0.0 ? 1 : -1;
+    L.side = side;
+  }
+  const double n[3] = {L.side * ns[0], L.side * ns[1], L.side * ns[2]};
+  // The slave surface point, on the side facing the master: along the node's own normal, or
+  // along the segment's where the node has none (a sphere of radius o_s).
+  const double* dir = &pr.slave_normal[3 * k];
+  const bool own_normal = dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0;
+  double xs[3];
+  if (os > 0.0) {
+    double ds[3];
+    if (own_normal) {
+      offset_vector(os, dir, n, ds);
+    } else {
+      ds[0] = os * n[0], ds[1] = os * n[1], ds[2] = os * n[2];
+    }
+    for (int d = 0; d < 3; ++d)
+      L.rs[d] = -ds[d];
+  }
+  for (int d = 0; d < 3; ++d)
+    xs[d] = p[d] + L.rs[d];
+  // The segment's offset surface on the node's side.
+  double c[4][3];
+  for (int j = 0; j < 4; ++j) {
+    const double* x = at(packed, q[j]);
+    c[j][0] = x[0], c[j][1] = x[1], c[j][2] = x[2];
+    if (om > 0.0) {
+      double r[3];
+      offset_vector(om,
+                    &pr.master_normal[3 * static_cast<std::size_t>(
+                                              pr.corner[4 * static_cast<std::size_t>(s) + j])],
+                    n, r);
+      c[j][0] += r[0], c[j][1] += r[1], c[j][2] += r[2];
+    }
+  }
+  if (q[2] == q[3]) {
+    L.sp = project_triangle(xs, c[0], c[1], c[2]);
+  } else {
+    const double* cc[4] = {c[0], c[1], c[2], c[3]};
+    if (guess == nullptr) {
+      L.sp = project_quad(xs, cc);
+    } else {
+      // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
+      L.sp = project_quad(xs, cc, guess[1] + guess[2] - guess[0] - guess[3],
+                          guess[2] + guess[3] - guess[0] - guess[1]);
+    }
+  }
+  return L;
+}
+
+// The segment of slave k: its current one while the projection stays within MAXPAR - 1 of it
+// (parametric measure), else the nearest candidate within that tolerance. Returns -1 when none.
+core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_located,
+                   const double* packed, Located& best) {
   const core::Index cur = pr.seg[k];
+  const double tol = pr.iface->maxpar - 1.0;
   if (cur >= 0) {
     // prev_shape holds last cycle's projection on `cur` (apply() swaps the arrays).
-    const SegmentPoint sp = project(cp, cur, p, packed, &pr.prev_shape[4 * k]);
-    if (!sp.degenerate && sp.outside == 0.0 &&
-        std::fabs(sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)]) {
-      best = sp;
+    const Located L = project_on(pr, k, cur, free, was_located, packed, &pr.prev_shape[4 * k]);
+    if (!L.sp.degenerate && L.sp.outside <= tol &&
+        std::fabs(L.sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)]) {
+      best = L;
       return cur;
     }
   }
-  const double tol = pr.iface->maxpar - 1.0;
   double best_score = kInf;
   core::Index found = -1;
   for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
     const core::Index s = pr.cand[c];
-    const SegmentPoint sp = project(cp, s, p, packed);
-    if (sp.degenerate || sp.outside > tol ||
-        std::fabs(sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)])
+    const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
+    if (L.sp.degenerate || L.sp.outside > tol ||
+        std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)])
       continue;
     // About the true distance to the segment: the normal distance and, outside the segment,
     // the parametric overshoot times half the segment size.
-    const double score = std::hypot(sp.distance, sp.outside * pr.margin);
+    const double score = std::hypot(L.sp.distance, L.sp.outside * pr.margin);
     if (score < best_score) {
       best_score = score;
-      best = sp;
+      best = L;
       found = s;
     }
   }
@@ -308,7 +496,7 @@ double node_mass(const std::vector<double>& mass, const unsigned char* rigid, co
 }
 
 void search(PassRuntime& pr, const double* packed, const std::vector<double>& mass,
-            const unsigned char* rigid, double tssfac) {
+            const unsigned char* rigid, const Rotations& rot, double tssfac) {
   const core::ContactPass& cp = *pr.pass;
   if (cp.offsets_follow_thickness) {
     double max_slave_offset = 0.0;
@@ -329,91 +517,159 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
   pr.searched = true;
   // The step vote: a slave node on the stiffest spring it may meet, against the lightest
   // master node, gets dt = TSSFAC sqrt(2 m_eff / k): half the two-mass spring's limit in
-  // frequency squared, leaving the other half to the elements at that node.
+  // frequency squared, leaving the other half to the elements at that node. A tangential
+  // spring on offset surface points also turns the nodes: its inverse mass adds o^2 / I of
+  // each side (the rotary inertia of the shells).
   const bool cohesive = pr.iface->cohesive;
   const double cn = pr.law.parameters().cn;
+  const double ct = cohesive ? pr.law.parameters().ct : 0.0;
   double vote = kInf;
   const std::size_t ns = cp.slave_count();
+  const auto turn = [&](core::Index node, double o) {  // o^2 / I of a node, 0 without rotation
+    const auto i = static_cast<std::size_t>(node);
+    if (rot.inertia == nullptr || !(rot.inertia[i] > 0.0) || (rigid != nullptr && rigid[i]))
+      return 0.0;
+    return o * o / rot.inertia[i];
+  };
 #pragma omp parallel for schedule(static) reduction(min : vote)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     if (pr.cand_start[k] == pr.cand_start[k + 1])
       continue;
     const double ms = node_mass(mass, rigid, cp.slave_nodes[k]);
+    const double turn_s = turn(cp.slave_nodes[k], pr.slave_offset[k]);
     for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
       const core::Index s = pr.cand[c];
-      double mm = kInf;
-      for (int j = 0; j < 4; ++j)
-        mm = std::min(mm, node_mass(mass, rigid, cp.segments[4 * static_cast<std::size_t>(s) + j]));
+      const auto su = static_cast<std::size_t>(s);
+      double mm = kInf, turn_m = 0.0;
+      for (int j = 0; j < 4; ++j) {
+        const core::Index m = cp.segments[4 * su + static_cast<std::size_t>(j)];
+        mm = std::min(mm, node_mass(mass, rigid, m));
+        turn_m = std::max(turn_m, turn(m, pr.seg_offset[su]));
+      }
       const double me = effective_mass(ms, mm);
-      double kk = penalty(pr, k, s, me);
+      const double kp = penalty(pr, k, s, me);
+      double kk = kp;
       if (cohesive)
         kk = std::max(kk, cn * cp.slave_area[k]);
       if (me > 0.0 && kk > 0.0)
         vote = std::min(vote, tssfac * std::sqrt(2.0 * me / kk));
+      // Tangential: the stick spring (the penalty) or the adhesive shear C_T.
+      const double kt = std::max(kp, ct * cp.slave_area[k]);
+      const double inv_m = (me > 0.0 ? 1.0 / me : 0.0) + turn_s + turn_m;
+      if (inv_m > 0.0 && kt > 0.0 && turn_s + turn_m > 0.0)
+        vote = std::min(vote, tssfac * std::sqrt(2.0 / (kt * inv_m)));
     }
   }
   pr.dt_vote = vote;
 }
 
+// Velocity of slave k's surface point relative to the surface point of segment s below it,
+// (v_s + w_s x r_s) - sum N_j (v_j + w_j x r_j), with r the offset vectors (the master's along
+// its nodal normals, turned to the side n points to). Rotations count at nodes that have them.
+void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index s, const double* shape,
+                       const double* rs, const double* n, const double* packed,
+                       const Rotations& rot, double du[3]) {
+  const core::ContactPass& cp = *pr.pass;
+  const auto sn = static_cast<std::size_t>(cp.slave_nodes[k]);
+  const double* p = at(packed, cp.slave_nodes[k]);
+  du[0] = p[3], du[1] = p[4], du[2] = p[5];
+  const bool spin = rot.inertia != nullptr;
+  if (spin && rot.inertia[sn] > 0.0) {
+    const double w[3] = {rot.wx[sn], rot.wy[sn], rot.wz[sn]};
+    du[0] += w[1] * rs[2] - w[2] * rs[1];
+    du[1] += w[2] * rs[0] - w[0] * rs[2];
+    du[2] += w[0] * rs[1] - w[1] * rs[0];
+  }
+  const auto su = static_cast<std::size_t>(s);
+  const core::Index* q = &cp.segments[4 * su];
+  const double om = pr.seg_offset[su];
+  for (int j = 0; j < 4; ++j) {
+    const double nj = shape[j];
+    if (nj == 0.0)
+      continue;
+    const double* v = at(packed, q[j]);
+    double vj[3] = {v[3], v[4], v[5]};
+    const auto m = static_cast<std::size_t>(q[j]);
+    if (spin && om > 0.0 && rot.inertia[m] > 0.0) {
+      double r[3];
+      offset_vector(om, &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * su + j])], n,
+                    r);
+      const double w[3] = {rot.wx[m], rot.wy[m], rot.wz[m]};
+      vj[0] += w[1] * r[2] - w[2] * r[1];
+      vj[1] += w[2] * r[0] - w[0] * r[2];
+      vj[2] += w[0] * r[1] - w[1] * r[0];
+    }
+    du[0] -= nj * vj[0];
+    du[1] -= nj * vj[1];
+    du[2] -= nj * vj[2];
+  }
+}
+
 // Geometry and law inputs of every slave node of a pass at the current positions; the first
-// half of the step's contact work with last cycle's forces. Returns nothing; fills the arrays.
+// half of the step's contact work with last cycle's forces. Fills the arrays.
 void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
-             const std::vector<double>& mass, const unsigned char* rigid) {
+             const std::vector<double>& mass, const unsigned char* rigid, const Rotations& rot) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t ns = cp.slave_count();
   const law::BatchHistory& h = pr.hist;
+  // The directors turn with their nodes over the step just taken.
+  if (rot.wx != nullptr && dt > 0.0) {
+    const std::size_t nm = pr.master_nodes.size();
+#pragma omp parallel for schedule(static)
+    for (long li = 0; li < static_cast<long>(nm); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      const auto m = static_cast<std::size_t>(pr.master_nodes[i]);
+      turn_director(rot.wx[m] * dt, rot.wy[m] * dt, rot.wz[m] * dt, &pr.master_normal[3 * i]);
+    }
+#pragma omp parallel for schedule(static)
+    for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+      const auto k = static_cast<std::size_t>(lk);
+      const auto m = static_cast<std::size_t>(cp.slave_nodes[k]);
+      turn_director(rot.wx[m] * dt, rot.wy[m] * dt, rot.wz[m] * dt, &pr.slave_normal[3 * k]);
+    }
+  }
 #pragma omp parallel for schedule(static)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     const core::Index node = cp.slave_nodes[k];
-    const double* p = at(packed, node);
-    // First half of the trapezoidal work of the step just taken, with last cycle's force.
+    // First half of the trapezoidal work of the step just taken, with last cycle's force (and
+    // last cycle's frame and surface point, still in the arrays).
     double w = 0.0;
     if (pr.prev_seg[k] >= 0) {
       const double* f = &pr.prev_force[3 * k];
-      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(pr.prev_seg[k])];
-      double du[3] = {p[3], p[4], p[5]};
-      for (int j = 0; j < 4; ++j) {
-        const double nj = pr.prev_shape[4 * k + j];
-        const double* v = at(packed, q[j]);
-        du[0] -= nj * v[3];
-        du[1] -= nj * v[4];
-        du[2] -= nj * v[5];
-      }
+      double du[3];
+      relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
+                        &pr.frame[9 * k], packed, rot, du);
       w -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work_part[k] = w;
     pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
-    SegmentPoint sp;
+    const auto state = static_cast<law::NodeState>(h.state[k]);
+    const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
     const bool was_located = pr.seg[k] >= 0;
-    const core::Index s = locate(pr, k, packed, sp);
+    Located L;
+    const core::Index s = locate(pr, k, free, was_located, packed, L);
     pr.seg[k] = s;
+    double* rs = &pr.rs[3 * k];
     if (s < 0) {
       pr.gap[k] = pr.far_gap;
       pr.slip_x[k] = pr.slip_y[k] = 0.0;
       pr.m_eff[k] = 0.0;
+      rs[0] = rs[1] = rs[2] = 0.0;
       continue;
     }
     const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
     for (int j = 0; j < 4; ++j)
-      pr.shape[4 * k + j] = sp.shape[j];
-    // Side: fixed while the node is in contact or bonded; otherwise the side it is on when
-    // clear of both surfaces (automatic orientation of shells touched from either side).
-    const double offset = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
-    const auto state = static_cast<law::NodeState>(h.state[k]);
-    const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
-    // A node that had no segment last cycle (off an edge, beyond reach) takes the side it is
-    // on now: it cannot have come through the surface.
-    signed char& side = pr.side[k];
-    if (side == 0 || (free && (!was_located || std::fabs(sp.distance) > offset)))
-      side = sp.distance >= 0.0 ? 1 : -1;
-    pr.gap[k] = side * sp.distance - offset;
+      pr.shape[4 * k + j] = L.sp.shape[j];
+    pr.side[k] = L.side;
+    rs[0] = L.rs[0], rs[1] = L.rs[1], rs[2] = L.rs[2];
+    pr.gap[k] = L.side * L.sp.distance;
     // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
     if (!was_located)
       h.gap[k] = pr.gap[k];
     double* fr = &pr.frame[9 * k];
-    const double n[3] = {side * sp.normal[0], side * sp.normal[1], side * sp.normal[2]};
+    const double n[3] = {L.side * L.sp.normal[0], L.side * L.sp.normal[1], L.side * L.sp.normal[2]};
     // Tangent axes from the global x axis (y where the normal is close to x): continuous as
     // the node moves from segment to segment, so the stick spring keeps its meaning.
     double e1[3] = {1.0 - n[0] * n[0], -n[0] * n[1], -n[0] * n[2]};
@@ -435,18 +691,17 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       fr[3 + c] = e1[c];
       fr[6 + c] = e2[c];
     }
-    // Relative displacement of the step: slave minus the segment point (same shape
-    // functions as the force distribution).
-    double du[3] = {p[3], p[4], p[5]};
+    // Relative displacement of the step: the slave's surface point minus the segment's
+    // surface point (same shape functions as the force distribution).
+    double du[3];
+    relative_velocity(pr, k, s, L.sp.shape, rs, n, packed, rot, du);
     double mm = 0.0;
-    for (int j = 0; j < 4; ++j) {
-      const double nj = sp.shape[j];
-      const double* v = at(packed, q[j]);
-      du[0] -= nj * v[3];
-      du[1] -= nj * v[4];
-      du[2] -= nj * v[5];
-      if (pr.need_mass && nj > 0.0)
-        mm += nj * node_mass(mass, rigid, q[j]);
+    if (pr.need_mass) {
+      for (int j = 0; j < 4; ++j) {
+        const double nj = L.sp.shape[j];
+        if (nj > 0.0)
+          mm += nj * node_mass(mass, rigid, q[j]);
+      }
     }
     pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
     pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
@@ -458,15 +713,41 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   }
 }
 
+// The directors at t = 0: the mean normal of the faces around each node.
+void init_directors(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
+    const std::size_t b = pr.node_seg_start[i];
+    mean_normal(
+        pr.node_seg_start[i + 1] - b,
+        [&](std::size_t f) {
+          return &cp.segments[4 * static_cast<std::size_t>(pr.node_seg[b + f])];
+        },
+        packed, &pr.master_normal[3 * i]);
+  }
+  if (cp.slave_face_start.empty())
+    return;
+  for (std::size_t k = 0; k < cp.slave_count(); ++k) {
+    const std::size_t b = cp.slave_face_start[k];
+    mean_normal(
+        cp.slave_face_start[k + 1] - b,
+        [&](std::size_t f) {
+          return &cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[b + f])];
+        },
+        packed, &pr.slave_normal[3 * k]);
+  }
+}
+
 }  // namespace
 
 void ContactSet::start(const double* packed) {
   for (auto& pp : passes_) {
     PassRuntime& pr = *pp;
-    search(pr, packed, mass_, rigid_, tssfac_);
+    init_directors(pr, packed);
+    search(pr, packed, mass_, rigid_, rot_, tssfac_);
     ++searches_;
     const std::size_t ns = pr.pass->slave_count();
-    measure(pr, 0.0, packed, nullptr, mass_, rigid_);
+    measure(pr, 0.0, packed, nullptr, mass_, rigid_, rot_);
     pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
     // Initial penetrations of nodes that are not bonded: the penalty will push them out in
     // the first cycles (a jolt the user should know about).
@@ -525,11 +806,11 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     const int interval = pr.iface->search_interval;
     if (!pr.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
         (interval > 0 && pr.cycles_since_search >= interval)) {
-      search(pr, packed, mass_, rigid_, tssfac_);
+      search(pr, packed, mass_, rigid_, rot_, tssfac_);
       ++searches_;
     }
 
-    measure(pr, dt, packed, temperature, mass_, rigid_);
+    measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.gap.data();
@@ -581,16 +862,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         f[c] = pn * fr[c] + t1 * fr[3 + c] + t2 * fr[6 + c];
       if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
         continue;
-      const double* p = at(packed, cp.slave_nodes[k]);
-      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
-      double du[3] = {p[3], p[4], p[5]};
-      for (int j = 0; j < 4; ++j) {
-        const double nj = pr.shape[4 * k + j];
-        const double* v = at(packed, q[j]);
-        du[0] -= nj * v[3];
-        du[1] -= nj * v[4];
-        du[2] -= nj * v[5];
-      }
+      double du[3];
+      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], fr, packed, rot_, du);
       pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
@@ -613,14 +886,35 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       fx[sn] -= f[0];
       fy[sn] -= f[1];
       fz[sn] -= f[2];
-      const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+      // The force acts on the surface points: moments r x f on nodes with rotations (the
+      // engine's moment arrays are internal moments, like its force arrays).
+      const bool spin = rot_.inertia != nullptr;
+      if (spin && rot_.inertia[sn] > 0.0) {
+        const double* rs = &pr.rs[3 * k];
+        rot_.mx[sn] -= rs[1] * f[2] - rs[2] * f[1];
+        rot_.my[sn] -= rs[2] * f[0] - rs[0] * f[2];
+        rot_.mz[sn] -= rs[0] * f[1] - rs[1] * f[0];
+      }
+      const auto su = static_cast<std::size_t>(s);
+      const core::Index* q = &cp.segments[4 * su];
       const int nodes = q[2] == q[3] ? 3 : 4;
+      const double om = pr.seg_offset[su];
       for (int j = 0; j < nodes; ++j) {
         const double nj = pr.shape[4 * k + j];
         const auto m = static_cast<std::size_t>(q[j]);
         fx[m] += nj * f[0];
         fy[m] += nj * f[1];
         fz[m] += nj * f[2];
+        if (spin && om > 0.0 && rot_.inertia[m] > 0.0) {
+          double rm_[3];
+          offset_vector(om,
+                        &pr.master_normal[3 * static_cast<std::size_t>(
+                                                  pr.corner[4 * su + static_cast<std::size_t>(j)])],
+                        &pr.frame[9 * k], rm_);
+          rot_.mx[m] += nj * (rm_[1] * f[2] - rm_[2] * f[1]);
+          rot_.my[m] += nj * (rm_[2] * f[0] - rm_[0] * f[2]);
+          rot_.mz[m] += nj * (rm_[0] * f[1] - rm_[1] * f[0]);
+        }
         for (int c = 0; c < 3; ++c)
           rm[static_cast<std::size_t>(c)] -= sign * nj * f[c];
       }
@@ -630,6 +924,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     pr.resultant = r;
     pr.master_resultant = rm;
     std::swap(pr.prev_force, pr.force);
+    std::swap(pr.prev_rs, pr.rs);
     // `shape` then holds older values: measure() rewrites it for every located node, and
     // only located nodes read it.
     std::swap(pr.prev_shape, pr.shape);

@@ -115,6 +115,8 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   thickness_rule(block.rule, nip, zeta, weight);
   const double kappa = block.shear_factor;
   const double qm = block.hourglass.qm;
+  const bool stiffness_hg = block.hourglass.ihq >= 4;
+  const double e_plate = rho * wave_speed * wave_speed;  // E / (1 - nu^2)
   const double h[4] = {1.0, -1.0, 1.0, -1.0};
   // Elements go in chunks: the kinematics of each element first, then one material call for
   // all the chunk's points (the law's loops then run over many points), then the forces.
@@ -131,6 +133,23 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   alignas(64) double E[9][kChunk], XL[4][kChunk], YL[4][kChunk], B1[4][kChunk], B2[4][kChunk];
   alignas(64) double VL[12][kChunk], WL[12][kChunk], RATE[9][kChunk];
   alignas(64) double AREA[kChunk], LEN[kChunk], TRI[kChunk];
+  double work_old[kChunk];
+  // Stress work of an element's thickness points over the step per unit area, for stresses
+  // q0.. and strain increments at0..: sigma : d_eps with the transverse shear as the element's
+  // forces see it (the resultant times the unscaled shear rate: the shear factor only scales
+  // the stiffness).
+  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
+  const auto point_work = [&](const ShellBlockState& sb, std::size_t q0, std::size_t at0) {
+    double w = 0.0;
+    for (int k = 0; k < nip; ++k) {
+      const std::size_t q = q0 + static_cast<std::size_t>(k),
+                        at = at0 + static_cast<std::size_t>(k);
+      w +=
+          weight[k] * (sb.s[0][q] * pdxx[at] + sb.s[1][q] * pdyy[at] + 2.0 * sb.s[2][q] * pdxy[at] +
+                       2.0 * inv_kappa * (sb.s[3][q] * pdyz[at] + sb.s[4][q] * pdzx[at]));
+    }
+    return w;
+  };
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
     const std::size_t chunk = std::min(kChunk, end - c0);
     // Stage A, lane-wise over the chunk (vectorised across elements): gather, co-rotational
@@ -318,6 +337,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         pdyz[at] = 0.5 * kappa * RATE[7][k_el] * dt;
         pdzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
       }
+      work_old[k_el] = point_work(st, unip * e, k_el * unip);
       const double x[4][3] = {{LX[0][k_el], LY[0][k_el], LZ[0][k_el]},
                               {LX[1][k_el], LY[1][k_el], LZ[1][k_el]},
                               {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
@@ -372,8 +392,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         qx += wk * st.s[4][q];
         tz += 0.5 * weight[k] * dzz[k];
       }
-      st.thickness[e] = t * (1.0 + tz);
       const double a = g.area;
+      r.internal_energy += 0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * t * a;
+      st.thickness[e] = t * (1.0 + tz);
       double fl[4][3], ml[4][2];
       for (int i = 0; i < 4; ++i) {
         fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);
@@ -383,9 +404,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         ml[i][1] = a * (g.b1[i] * mxx + g.b2[i] * mxy) + 0.25 * a * qx;
       }
       if (qm > 0.0) {
-        // Viscous hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane
-        // and the two rotations, with gamma = h - (h . x) b1 - (h . y) b2 orthogonal to the
-        // linear fields.
+        // Hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane and the
+        // two rotations, with gamma = h - (h . x) b1 - (h . y) b2 orthogonal to the linear
+        // fields; viscous (IHQ 1-3) or stiffness (IHQ 4-5).
         double hx = 0, hy = 0;
         for (int i = 0; i < 4; ++i) {
           hx += h[i] * g.xl[i];
@@ -403,20 +424,50 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           qv[4] += gam[i] * wl[i][1];
         }
         const double sa = std::sqrt(a);
-        const double cm = 0.25 * qm * rho * wave_speed * t * sa;
-        const double cw = qm * rho * wave_speed * t * t * t / (12.0 * sa);
-        const double ct = qm * rho * wave_speed * t * t * t * sa / 48.0;
-        const double coef[5] = {cm, cm, cw, ct, ct};
-        double power = 0.0;
-        for (int j = 0; j < 5; ++j)
-          power += coef[j] * qv[j] * qv[j];
-        r.hourglass_energy += power * dt;
-        for (int i = 0; i < 4; ++i) {
-          fl[i][0] += cm * qv[0] * gam[i];
-          fl[i][1] += cm * qv[1] * gam[i];
-          fl[i][2] += cw * qv[2] * gam[i];
-          ml[i][0] += ct * qv[3] * gam[i];
-          ml[i][1] += ct * qv[4] * gam[i];
+        double coef[5];
+        if (stiffness_hg) {
+          // Stiffness form (Belytschko-Tsay): the generalised forces grow with the modes'
+          // displacements, Q += k q_rate dt, with k from the modes' elastic scale
+          // (membrane E t, out of plane E t^3 / L^2, rotations E t^3) times QM, L^2 = 2 / (b . b)
+          // (the area for a square, the short side squared for an elongated element).
+          double bb = 0.0;
+          for (int i = 0; i < 4; ++i)
+            bb += g.b1[i] * g.b1[i] + g.b2[i] * g.b2[i];
+          const double km = qm * e_plate * t * a * bb / 8.0;
+          const double kw = qm * e_plate * t * t * t * bb / 24.0;
+          const double kr = qm * e_plate * t * t * t * a * bb / 192.0;
+          const double k[5] = {km, km, kw, kr, kr};
+          double power = 0.0;
+          for (int j = 0; j < 5; ++j) {
+            double& qj = st.hourglass[j][e];
+            const double q_new = qj + k[j] * qv[j] * dt;
+            power += 0.5 * (qj + q_new) * qv[j];
+            qj = q_new;
+            coef[j] = q_new;
+          }
+          r.hourglass_energy += power * dt;
+          for (int i = 0; i < 4; ++i) {
+            fl[i][0] += coef[0] * gam[i];
+            fl[i][1] += coef[1] * gam[i];
+            fl[i][2] += coef[2] * gam[i];
+            ml[i][0] += coef[3] * gam[i];
+            ml[i][1] += coef[4] * gam[i];
+          }
+        } else {
+          coef[0] = coef[1] = 0.25 * qm * rho * wave_speed * t * sa;
+          coef[2] = qm * rho * wave_speed * t * t * t / (12.0 * sa);
+          coef[3] = coef[4] = qm * rho * wave_speed * t * t * t * sa / 48.0;
+          double power = 0.0;
+          for (int j = 0; j < 5; ++j)
+            power += coef[j] * qv[j] * qv[j];
+          r.hourglass_energy += power * dt;
+          for (int i = 0; i < 4; ++i) {
+            fl[i][0] += coef[0] * qv[0] * gam[i];
+            fl[i][1] += coef[1] * qv[1] * gam[i];
+            fl[i][2] += coef[2] * qv[2] * gam[i];
+            ml[i][0] += coef[3] * qv[3] * gam[i];
+            ml[i][1] += coef[4] * qv[4] * gam[i];
+          }
         }
       }
       // Back to global axes, added to the nodes (a triangle's fourth node is its third).
@@ -491,6 +542,8 @@ void ShellBlockState::resize(const core::ShellBlock& block) {
   }
   dt_factor.assign(n, 1.0);
   area.assign(n, 0.0);
+  for (auto& q : hourglass)
+    q.assign(block.hourglass.ihq >= 4 ? n : 0, 0.0);
 }
 
 ShellResult shell_forces(const core::ShellBlock& block, const core::Material& material,

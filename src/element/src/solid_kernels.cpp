@@ -79,6 +79,13 @@ void update_material(const M& m, std::size_t n, PointScratch& s, double dt, Soli
   }
 }
 
+// sigma : D at stress point q of the block state, D from scratch point p (tensor shears).
+inline double stress_power(const SolidBlockState& st, std::size_t q, const PointScratch& s,
+                           std::size_t p) {
+  return st.s[0][q] * s.d[0][p] + st.s[1][q] * s.d[1][p] + st.s[2][q] * s.d[2][p] +
+         2.0 * (st.s[3][q] * s.d[3][p] + st.s[4][q] * s.d[4][p] + st.s[5][q] * s.d[5][p]);
+}
+
 // L on the configuration at t_{n+1} mapped to the mid-step configuration:
 // L_m = L (I - dt/2 L)^-1. A rigid rotation then gives an exactly skew L_m (Hughes-Winget), so
 // the hypoelastic update stays objective however far an element turns.
@@ -207,13 +214,15 @@ void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLan
             q[d][k] - (hx[k] * L[3 * d][k] + hy[k] * L[3 * d + 1][k] + hz[k] * L[3 * d + 2][k]);
         double rd;
         if constexpr (kStiffness) {
+          // Booked at the step's midpoint: exactly the change of the stored k HG^2 / 2.
           HG[3 * a + d][k] += qd * dt;
           rd = coeff[k] * HG[3 * a + d][k];
+          pw += coeff[k] * (HG[3 * a + d][k] - 0.5 * qd * dt) * qd;
         } else {
           rd = coeff[k] * qd;
+          pw += rd * qd;
         }
         r[d][k] = rd;
-        pw += rd * qd;
       }
       power[k] += pw;
     }
@@ -373,7 +382,13 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         deformation_gradient(cur, g0.bx, g0.by, g0.bz, s, k);
       }
     }
+    // Stress work of the step, midpoint rule: (sigma_n + sigma_{n+1}) / 2 : D dt V.
+    double power_old[kLanes];
+    for (std::size_t k = 0; k < n; ++k)
+      power_old[k] = stress_power(st, c0 + k, s, k);
     update_material(mat, n, s, dt, st, c0);
+    for (std::size_t k = 0; k < n; ++k)
+      r.internal_energy += 0.5 * (power_old[k] + stress_power(st, c0 + k, s, k)) * vol[k] * dt;
 
     for (int c = 0; c < 6; ++c)
       for (std::size_t k = 0; k < kLanes; ++k)
@@ -485,7 +500,14 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         r.dt_element = e;
       }
     }
+    double power_old[kChunk];
+    for (std::size_t p = 0; p < 8 * n; ++p)
+      power_old[p] = stress_power(st, 8 * c0 + p, s, p);
     update_material(mat, 8 * n, s, dt, st, 8 * c0);
+    for (std::size_t p = 0; p < 8 * n; ++p) {
+      const double w = gg[p / 8].weight_det[p % 8];
+      r.internal_energy += 0.5 * (power_old[p] + stress_power(st, 8 * c0 + p, s, p)) * w * dt;
+    }
 
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;

@@ -60,6 +60,7 @@ struct InternalResult {
   WorkItem dt_item{};
   std::size_t dt_element = 0;
   double hourglass = 0.0;
+  double internal = 0.0;  ///< stress work of the cycle, from the elements' stresses
   bool failed = false;
   WorkItem failed_item{};
   std::size_t failed_element = 0;
@@ -70,6 +71,7 @@ struct ItemResult {
   double dt_min = 1e300;
   std::size_t dt_element = 0;
   double hourglass_energy = 0.0;
+  double internal_energy = 0.0;
   bool failed = false;
   std::size_t failed_element = 0;
 };
@@ -199,6 +201,9 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   std::size_t element_count = model.solid_count();
   for (const auto& b : model.shell_blocks)
     element_count += b.size();
+  // Per block: accumulated stress work and hourglass energy (the run's warnings name the part).
+  std::vector<std::array<double, 2>> shell_books(model.shell_blocks.size(), {0.0, 0.0});
+  std::vector<std::array<double, 2>> solid_books(model.solid_blocks.size(), {0.0, 0.0});
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
   const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
   const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
@@ -221,13 +226,15 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
             const element::ShellResult x = element::shell_forces(
                 blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block],
                 view, spin, dt, it.begin, it.end, forces, moments);
-            out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
+            out = {x.dt_min,          x.dt_element, x.hourglass_energy,
+                   x.internal_energy, x.failed,     x.failed_element};
           } else {
             const core::SolidBlock& blk = model.solid_blocks[it.block];
             const element::SolidResult x =
                 element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
                                       solids[it.block], view, dt, it.begin, it.end, forces);
-            out = {x.dt_min, x.dt_element, x.hourglass_energy, x.failed, x.failed_element};
+            out = {x.dt_min,          x.dt_element, x.hourglass_energy,
+                   x.internal_energy, x.failed,     x.failed_element};
           }
         }
       }
@@ -247,6 +254,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
           r.dt_element = x.dt_element;
         }
         r.hourglass += x.hourglass_energy;
+        r.internal += x.internal_energy;
+        const WorkItem& it = phases[p][w];
+        std::array<double, 2>& books = it.shell ? shell_books[it.block] : solid_books[it.block];
+        books[0] += x.internal_energy;
+        books[1] += x.hourglass_energy;
       }
     }
     return r;
@@ -265,6 +277,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   // Contact interfaces: built once the masses and the elements' first step are known (SOFT = 1
   // stiffness, the contact's step vote).
   std::optional<contact::ContactSet> contact;
+  std::vector<double> contact_inertia(model.contacts.empty() ? 0 : n, 0.0);
   const auto contact_forces = [&] {
     if (contact)
       sink.contact_forces(t, contact->report());
@@ -311,6 +324,12 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       for (const double& v : b.thickness)
         thickness.push_back(&v);
     contact->follow_shell_thickness(std::move(thickness));
+    // Rotary inertia where the contact may turn a node: not at rigid nodes (their body takes
+    // forces only).
+    for (std::size_t i = 0; i < n; ++i)
+      contact_inertia[i] = has_rigid && is_rigid[i] ? 0.0 : s.inertia[i];
+    contact->follow_rotations({s.wx.data(), s.wy.data(), s.wz.data(), s.mx.data(), s.my.data(),
+                               s.mz.data(), contact_inertia.data()});
     contact->start(packed.data());
     for (const std::string& w : contact->warnings())
       res.warnings.push_back(w);
@@ -552,6 +571,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const double kinetic0 = kinetic();
   double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
   double hourglass = 0.0;
+  double internal_energy = 0.0;  // stress work summed from the elements' stresses
   double work_external = 0.0;
   Energies en;
   const auto energies = [&] {
@@ -560,12 +580,63 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     en.kinetic = kinetic();
     en.hourglass = hourglass;
     en.contact = contact ? contact->energy() : 0.0;
-    en.internal = work_internal - hourglass - en.contact;
+    // From the elements' stresses, not the work of the nodal forces less the other books: a
+    // book that is wrong (a contact that feeds energy in, hourglass forces that do work they
+    // do not book) then shows in the total and the ratio.
+    en.internal = internal_energy;
     en.external_work = work_external;
     en.total = en.kinetic + en.internal + en.hourglass + en.contact;
     const double reference = kinetic0 + work_external;
     en.ratio = std::abs(reference) > 0.0 ? en.total / reference : 1.0;
     return en;
+  };
+
+  // The books every run is checked against (once each, at the first output where it holds):
+  // hourglass energy above 10 % of the internal energy, named by the part with the most; the
+  // contact energy of an interface below zero (the contact gave energy to the model) beyond
+  // 1e-3 of the energy that entered the model.
+  bool warned_hourglass = false, warned_contact = false;
+  const auto check_books = [&](const Energies& e) {
+    if (!warned_hourglass && e.hourglass > 0.1 * e.internal && e.hourglass > 0.0) {
+      warned_hourglass = true;
+      std::size_t worst = 0;
+      bool worst_shell = true;
+      double most = -1.0;
+      for (std::size_t b = 0; b < shell_books.size(); ++b)
+        if (shell_books[b][1] > most)
+          most = shell_books[b][1], worst = b, worst_shell = true;
+      for (std::size_t b = 0; b < solid_books.size(); ++b)
+        if (solid_books[b][1] > most)
+          most = solid_books[b][1], worst = b, worst_shell = false;
+      const auto& books = worst_shell ? shell_books[worst] : solid_books[worst];
+      const core::Index part =
+          worst_shell ? model.shell_blocks[worst].part : model.solid_blocks[worst].part;
+      std::ostringstream os;
+      os.precision(4);
+      os << "hourglass energy " << e.hourglass << " is "
+         << 100.0 * e.hourglass / std::max(e.internal, 1e-300) << " % of the internal energy "
+         << e.internal << " at t = " << e.time << ": most in part "
+         << model.parts[static_cast<std::size_t>(part)].id << " (hourglass " << books[1]
+         << ", internal " << books[0]
+         << "); its results are not to be trusted (a stiffness hourglass control, *HOURGLASS "
+            "IHQ 4 or 5, or a finer mesh)";
+      res.warnings.push_back(os.str());
+    }
+    if (!warned_contact && contact) {
+      const double reference = std::abs(kinetic0) + std::abs(e.external_work);
+      for (const contact::InterfaceReport& r : contact->report()) {
+        if (r.work < -1e-3 * reference) {
+          warned_contact = true;
+          std::ostringstream os;
+          os.precision(4);
+          os << "contact " << r.id << " energy " << r.work << " is negative at t = " << e.time
+             << ": the interface gave energy to the model (" << -100.0 * r.work / reference
+             << " % of the energy that entered it)";
+          res.warnings.push_back(os.str());
+          break;
+        }
+      }
+    }
   };
 
   const core::OutputRequests& out = model.output;
@@ -592,6 +663,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     if (want_glstat) {
       sink.glstat(energies());
+      check_books(en);
       if (has_rigid)
         sink.rigid_bodies(t, *rigid_bodies);
       while (next_glstat <= t + eps_t)
@@ -645,6 +717,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       break;
     }
     hourglass += ir.hourglass;
+    internal_energy += ir.internal;
     bc.loads(t, s);
     for (const core::TemperatureHistory& th : model.temperature_histories) {
       if (t >= th.birth && t <= th.death) {
@@ -698,6 +771,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   res.contact_searches = contact ? contact->searches() : 0;
   res.wall_seconds = wall();
   res.last = energies();
+  check_books(res.last);
   if (res.wall_seconds > 0.0) {
     res.element_cycles_per_second =
         static_cast<double>(element_count) * static_cast<double>(cycle) / res.wall_seconds;

@@ -239,7 +239,7 @@ struct Builder {
         b.material = mat;
         b.nip = sec.nip;
         b.shear_factor = sec.shear_factor;
-        b.hourglass = hourglass_of(p, 3, "shells");
+        b.hourglass = hourglass_of(p, 5, "shells");
         if (d.control_shell && d.control_shell->intgrd == 1) {
           if (sec.nip < 2) {
             error(sec.where, "*SECTION_SHELL", "NIP",

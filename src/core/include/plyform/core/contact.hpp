@@ -48,6 +48,12 @@ struct ContactPass {
   std::vector<std::size_t> slave_shell_start;  ///< CSR per slave node into slave_shells
   std::vector<Index> slave_shells;
   std::vector<double> slave_offset_factor;  ///< per slave node
+  // The faces of the slave surface (4 node indices each, like `segments`) and, per slave node,
+  // those around it (CSR into slave_faces): the node's surface normal, along which its offset
+  // surface point lies, is their mean.
+  std::vector<Index> slave_faces;
+  std::vector<std::size_t> slave_face_start;
+  std::vector<Index> slave_face_index;
   /// +1 when the slave nodes are the interface's slave side (rcforc sums the force on them),
   /// -1 in the swapped pass of a two-way contact (the master nodes are the slave side then).
   int slave_side_sign = 1;

@@ -1,6 +1,7 @@
 #pragma once
 // The Belytschko-Lin-Tsay shell (LS-DYNA ELFORM 2): co-rotational, one in-plane integration
-// point, NIP points through the thickness, Mindlin transverse shear, viscous hourglass control.
+// point, NIP points through the thickness, Mindlin transverse shear, viscous (IHQ 1-3) or
+// stiffness (IHQ 4-5) hourglass control.
 // Like the solid kernels it adds each element's nodal forces and moments straight to the
 // nodes, one colour at a time.
 
@@ -31,6 +32,10 @@ struct ShellBlockState {
   std::vector<double> thickness;  ///< per element
   std::vector<double> dt_factor;  ///< mass scaling, as for solids
   std::vector<double> area;       ///< current area per element
+  /// Stiffness hourglass control (IHQ 4-5): the generalised hourglass forces of the element's
+  /// four modes in its co-rotational frame (membrane x, y; out of plane; rotations x, y),
+  /// accumulated from their rates. Empty for the viscous forms.
+  std::vector<double> hourglass[5];
 
   void resize(const core::ShellBlock& block);
 };
@@ -42,7 +47,8 @@ struct ShellResult {
   double dt_min = 1e300;
   std::size_t dt_element = 0;
   double hourglass_energy = 0.0;
-  bool failed = false;  ///< a collapsed element (zero area or thickness)
+  double internal_energy = 0.0;  ///< stress work of the step, from the elements' stresses
+  bool failed = false;           ///< a collapsed element (zero area or thickness)
   std::size_t failed_element = 0;
 };
 

@@ -160,11 +160,16 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
     }
   }
 
-  // Normal traction: penalty in contact, RCCM cohesion C_N g beta^2 in separation.
+  // Normal traction: penalty in contact, RCCM cohesion C_N g beta^2 in separation. A bonded
+  // node in compression is at least as stiff as its adhesive layer, C_N beta^2: the intact
+  // interface is then the same elastic layer in compression and in tension (a soft penalty
+  // would let bonded layers sink into each other where a bent laminate presses them).
   double p_elastic;
   double k_node;
   if (s == NodeState::contact) {
     k_node = in.k_normal();
+    if (beta > 0.0 && p.cn * beta * beta > k_node)
+      k_node = p.cn * beta * beta;
     p_elastic = -k_node * g;
   } else {
     k_node = p.cn * beta * beta;

@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""Checks a DCB run of generate.py against beam theory (derivation in README.md).
+
+    check.py RUNDIR [--plot PNG]
+
+RUNDIR holds dcb.json, rcforc.csv, nodout.csv, glstat.csv, interface_energy.csv and
+cohesive.csv of `plyform run`. Prints each check with its figures; exits 1 when one fails.
+Standard library only (the plot needs matplotlib).
+"""
+
+import csv
+import json
+import math
+import os
+import sys
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def closed_forms(p):
+    e, b, h, a0 = p["E"], p["width"], p["thickness"], p["a0"]
+    ei = e * b * h ** 3 / 12.0  # one arm
+    g_ic = p["sigma_max"] ** 2 / p["cn"]  # omega = sigma_max^2 / C_N
+    k = 2.0 * p["cn"] * b  # foundation of one arm: half the interface layer, per length
+    lam = (k / (4.0 * ei)) ** 0.25
+    la = lam * a0
+    # Opening of the two tips per load (beam on an elastic foundation, Kanninen 1973).
+    compliance = 2.0 * a0 ** 3 / (3.0 * ei) * (1 + 3 / la + 3 / la ** 2 + 1.5 / la ** 3)
+    big_k = b * math.sqrt(g_ic * e * h ** 3 / 12.0)  # = sqrt(G_Ic B E I)
+    peak = big_k / (a0 + 1.0 / lam)  # LEFM with the root rotation of the foundation
+    return {"EI": ei, "G_Ic": g_ic, "lambda": lam, "compliance": compliance, "K": big_k,
+            "peak": peak,
+            "propagation": lambda d: math.sqrt(2.0 * big_k ** 3 / (3.0 * ei * d))}
+
+
+def main(argv):
+    if not argv:
+        sys.exit(__doc__)
+    run = argv[0]
+    plot = argv[argv.index("--plot") + 1] if "--plot" in argv else None
+    with open(os.path.join(run, "dcb.json")) as f:
+        p = json.load(f)
+    cf = closed_forms(p)
+    # Tip opening from nodout, load from the interface resultant (quasi-static: the interface
+    # carries the tip load; the slave side, the upper arm, is pulled down by it).
+    tips = {}
+    for r in rows(os.path.join(run, "nodout.csv")):
+        n = int(r["node"])
+        if n in (p["tip_upper"], p["tip_lower"]):
+            tips.setdefault(r["time"], {})[n] = float(r["uz"])
+    load = {r["time"]: -float(r["fz"]) for r in rows(os.path.join(run, "rcforc.csv"))}
+    curve = []
+    for t, u in tips.items():
+        if len(u) == 2 and t in load:
+            curve.append((float(t), u[p["tip_upper"]] - u[p["tip_lower"]], load[t]))
+    curve.sort()
+    ok = True
+
+    def check(name, value, reference, tol):
+        nonlocal ok
+        err = abs(value - reference) / abs(reference)
+        good = err <= tol
+        ok = ok and good
+        print(f"  {'ok  ' if good else 'FAIL'} {name}: {value:.5g} against {reference:.5g} "
+              f"({100 * err:.2f} %, limit {100 * tol:.0f} %)")
+
+    i_peak = max(range(len(curve)), key=lambda i: curve[i][2])
+    t_peak, d_peak, p_peak = curve[i_peak]
+    print(f"DCB {run}: dx {p['dx']}, {p['ny']} across; lambda {cf['lambda']:.4f}/mm, "
+          f"peak at opening {d_peak:.4g} mm")
+    lin = [(d, f) for _, d, f in curve[:i_peak] if 0.1 * d_peak < d < 0.6 * d_peak]
+    stiff = sum(f * d for d, f in lin) / sum(d * d for d, f in lin)  # least squares through 0
+    check("linear branch stiffness P/delta [N/mm]", stiff, 1.0 / cf["compliance"], 0.05)
+    check("peak load [N]", p_peak, cf["peak"], 0.05)
+    prop = [(d, f) for _, d, f in curve[i_peak:] if d > 1.5 * d_peak]
+    worst = max(prop, key=lambda x: abs(x[1] / cf["propagation"](x[0]) - 1))
+    check(f"propagation branch, worst point (opening {worst[0]:.3g} mm) [N]", worst[1],
+          cf["propagation"](worst[0]), 0.05)
+    # Energy books.
+    gl = rows(os.path.join(run, "glstat.csv"))
+    last = gl[-1]
+    ratio = float(last["energy_ratio"])
+    check("energy ratio at the end", ratio, 1.0, 0.01)
+    hg_share = max(float(r["hourglass"]) / float(r["internal"]) for r in gl
+                   if float(r["internal"]) > 1e-3 * float(last["internal"]))
+    good = hg_share < 0.05
+    ok = ok and good
+    print(f"  {'ok  ' if good else 'FAIL'} hourglass / internal energy, largest: "
+          f"{100 * hg_share:.2f} % (limit 5 %)")
+    scale = float(last["external_work"])
+    lowest = min(float(r["contact"]) for r in gl)
+    good = lowest >= -1e-6 * scale
+    ok = ok and good
+    print(f"  {'ok  ' if good else 'FAIL'} contact energy never negative: lowest {lowest:.3g}")
+    # Damage energy against G_Ic times the cracked area; the crack front where beta = 1/2 on
+    # the history nodes along the path.
+    ie = [r for r in rows(os.path.join(run, "interface_energy.csv"))]
+    damage = float(ie[-1]["damage"]) + float(ie[-1]["viscous"])
+    coh = rows(os.path.join(run, "cohesive.csv"))
+    t_end = coh[-1]["time"]
+    front = max([p["a0"]] + [node_x(p, int(r["node"])) for r in coh
+                 if r["time"] == t_end and float(r["beta"]) < 0.5])
+    area = p["width"] * (front - p["a0"])
+    check(f"damage energy [mJ] against G_Ic B (a - a0), a = {front:.4g} mm", damage,
+          cf["G_Ic"] * area, 0.05)
+    if plot:
+        try:
+            import matplotlib
+            matplotlib.use("Agg")
+            import matplotlib.pyplot as plt
+        except ImportError:
+            print("  (no matplotlib: no plot)")
+        else:
+            fig, ax = plt.subplots(figsize=(7, 4.5))
+            ax.plot([d for _, d, _ in curve], [f for _, _, f in curve], label="plyform")
+            dl = [0.0, 1.2 * d_peak]
+            ax.plot(dl, [x / cf["compliance"] for x in dl], "--", label="beam on elastic foundation")
+            dp = [d_peak * (0.8 + 0.05 * i) for i in range(200)
+                  if d_peak * (0.8 + 0.05 * i) <= curve[-1][1]]
+            ax.plot(dp, [cf["propagation"](x) for x in dp], ":",
+                    label="LEFM propagation sqrt(2K^3 / (3 E I delta))")
+            ax.axhline(cf["peak"], color="grey", lw=0.5)
+            ax.set_xlabel("tip opening delta [mm]")
+            ax.set_ylabel("load P [N]")
+            ax.set_title(f"DCB, G_Ic = {cf['G_Ic']:.3g} N/mm, dx = {p['dx']} mm")
+            ax.legend()
+            fig.tight_layout()
+            fig.savefig(plot, dpi=120)
+            print(f"  plot: {plot}")
+    print("DCB checks:", "all passed" if ok else "FAILED")
+    return 0 if ok else 1
+
+
+def node_x(p, node):
+    """x of an upper-arm node (first row) from its id (generate.py numbering)."""
+    nx = round(p["length"] / p["dx"])
+    return p["length"] * ((node - 100001) % (nx + 1)) / nx
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
