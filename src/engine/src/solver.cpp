@@ -387,17 +387,17 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   };
 
   // The trapezoidal work of the step to come, first half: known once v_{n+3/2} is.
-  double pending_internal = 0.0, pending_external = 0.0;
-  std::array<double, 2> rotation_sums{};  // moments' work sums of the last velocity pass
+  double pending_external = 0.0;
 
   // Velocity update v_{n+3/2} = v_{n+1/2} + a_{n+1} dt_avg in one pass over the nodes, which
-  // also sums the work of the forces at t_{n+1} over the step just taken (dt_prev, second half
-  // of the trapezoid) and over the step to come (dt_next, first half), counts non-finite
-  // velocities and zeroes the forces for the next element pass; then constraints and
-  // reactions on the constrained nodes only, correcting their share of the sums.
-  // Returns {internal, external} work of the step just taken.
+  // also sums the work of the external forces at t_{n+1} over the step just taken (dt_prev,
+  // second half of the trapezoid) and over the step to come (dt_next, first half), counts
+  // non-finite velocities and zeroes the forces for the next element pass; then constraints and
+  // reactions on the constrained nodes only, correcting their share of the sums. (The internal
+  // energy is the elements' own book, not the work of their nodal forces.)
+  // Returns the external work of the step just taken.
   const auto advance_velocity = [&](double t_now, double dt_prev, double dt_next,
-                                    double dt_avg) -> std::array<double, 2> {
+                                    double dt_avg) -> double {
     w_full = dt_prev / (2.0 * dt_avg);
     for (core::Index ri : rigid_nodes) {  // the velocity pass zeroes the forces
       const auto i = static_cast<std::size_t>(ri);
@@ -411,18 +411,16 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       saved_f[3 * k + 1] = s.fy[i];
       saved_f[3 * k + 2] = s.fz[i];
     }
-    const auto sums = deterministic_sums<7>(n, [&](std::size_t i, std::array<double, 7>& acc) {
+    const auto sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
       const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
       const double fx = s.fx[i], fy = s.fy[i], fz = s.fz[i];
       const double ex = s.ex[i], ey = s.ey[i], ez = s.ez[i];
       const double h = inv_mass[i] * dt_avg;
       const double nx = vx + (ex - fx) * h, ny = vy + (ey - fy) * h, nz = vz + (ez - fz) * h;
-      acc[0] += vx * fx + vy * fy + vz * fz;
-      acc[1] += nx * fx + ny * fy + nz * fz;
-      acc[2] += vx * ex + vy * ey + vz * ez;
-      acc[3] += nx * ex + ny * ey + nz * ez;
+      acc[0] += vx * ex + vy * ey + vz * ez;
+      acc[1] += nx * ex + ny * ey + nz * ez;
       if (!std::isfinite(nx + ny + nz))
-        acc[4] += 1.0;
+        acc[2] += 1.0;
       old_x[i] = vx;
       old_y[i] = vy;
       old_z[i] = vz;
@@ -437,8 +435,6 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
         const double hr = inv_inertia[i] * dt_avg;
         const double rx = wx - mx * hr, ry = wy - my * hr, rz = wz - mz * hr;
-        acc[5] += wx * mx + wy * my + wz * mz;
-        acc[6] += rx * mx + ry * my + rz * mz;
         old_wx[i] = wx;
         old_wy[i] = wy;
         old_wz[i] = wz;
@@ -448,8 +444,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         s.mx[i] = s.my[i] = s.mz[i] = 0.0;
       }
     });
-    bad_velocities = sums[4];
-    rotation_sums = {sums[5], sums[6]};
+    bad_velocities = sums[2];
     // Free velocities of the constrained nodes, before the constraints overwrite them.
     std::vector<std::array<double, 3>>& free_v = free_velocity;
     for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
@@ -457,7 +452,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       free_v[k] = {s.vx[i], s.vy[i], s.vz[i]};
     }
     bc.constrain(t_now, dt_next, dt_avg, old, s);
-    double prev_ext = 0.0, next_int = 0.0, next_ext = 0.0;  // constrained nodes, in order
+    double prev_ext = 0.0, next_ext = 0.0;  // constrained nodes, in order
     for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
       const auto i = static_cast<std::size_t>(constrained_nodes[k]);
       const unsigned char* c = &constrained[3 * i];
@@ -470,7 +465,6 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         r[d] = c[d] ? s.mass[i] * (vc[d] - vo[d]) / dt_avg - (e[d] - f[d]) : 0.0;
         prev_ext += vo[d] * r[d];
         next_ext += vc[d] * r[d] + (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * e[d];
-        next_int += (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * f[d];
       }
       s.rx[i] = r[0];
       s.ry[i] = r[1];
@@ -503,7 +497,6 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         const auto i = static_cast<std::size_t>(rigid_nodes[k]);
         const double d[3] = {s.vx[i] - rigid_free[k][0], s.vy[i] - rigid_free[k][1],
                              s.vz[i] - rigid_free[k][2]};
-        next_int += d[0] * rfx[i] + d[1] * rfy[i] + d[2] * rfz[i];
         next_ext += d[0] * s.ex[i] + d[1] * s.ey[i] + d[2] * s.ez[i];
       }
       // Work of the bodies' prescribed motions and constraints (their reactions).
@@ -514,42 +507,25 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
                     2.0 * dt_avg / std::max(dt_prev, 1e-300) * (dt_prev > 0.0 ? 1.0 : 0.0);
       }
     }
-    pending_internal = 0.5 * dt_next * (sums[1] + next_int);
-    pending_external = 0.5 * dt_next * (sums[3] + next_ext);
-    return {0.5 * dt_prev * sums[0], 0.5 * dt_prev * (sums[2] + prev_ext)};
+    pending_external = 0.5 * dt_next * (sums[1] + next_ext);
+    return 0.5 * dt_prev * (sums[0] + prev_ext);
   };
   // Rotations (shell nodes): the velocity pass integrates them (w_{n+3/2} = w_{n+1/2} -
-  // I^-1 m dt_avg) and sums the moments' work; here fixed rotations are zeroed and the work
-  // booked: the step just taken is returned, the next step's first half goes to
-  // pending_internal.
+  // I^-1 m dt_avg); here fixed rotations are zeroed (their reaction moments do no work).
   std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
   for (const core::FixedDofs& f : model.fixed) {
     if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
       fixed_rotations.push_back({f.node, f.dofs});
   }
-  const auto advance_rotation = [&](double dt_prev, double dt_next, double dt_avg) {
-    if (!rotations)
-      return 0.0;
-    const std::array<double, 2> sums = rotation_sums;  // summed in the velocity pass
-    // Fixed rotations: their velocity is zero, and so is the work of their reaction moments;
-    // remove the free part of the next half's sum at those nodes (their moment is gone, so the
-    // correction is exact only with the moment: recomputed from the change of w).
-    double correction = 0.0;
+  const auto fix_rotations = [&] {
     for (const auto& [node, dofs] : fixed_rotations) {
       const auto i = static_cast<std::size_t>(node);
       double* w[3] = {&s.wx[i], &s.wy[i], &s.wz[i]};
-      const double* wo[3] = {&old_wx[i], &old_wy[i], &old_wz[i]};
       for (int d = 0; d < 3; ++d) {
-        if (!(dofs & (core::dof_rx << d)))
-          continue;
-        // The moment was -(w - wo) I / dt_avg; its term w * m in acc[1] is dropped.
-        const double m = -(*w[d] - *wo[d]) * s.inertia[i] / dt_avg;
-        correction -= *w[d] * m;
-        *w[d] = 0.0;
+        if (dofs & (core::dof_rx << d))
+          *w[d] = 0.0;
       }
     }
-    pending_internal += 0.5 * dt_next * (sums[1] + correction);
-    return 0.5 * dt_prev * sums[0];
   };
 
   const auto kinetic = [&] {
@@ -567,9 +543,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 
   // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
-  advance_rotation(0.0, dt, 0.5 * dt);
+  fix_rotations();
   const double kinetic0 = kinetic();
-  double work_internal = 0.0;  // stress + hourglass work, from nodal forces (trapezoid)
   double hourglass = 0.0;
   double internal_energy = 0.0;  // stress work summed from the elements' stresses
   double work_external = 0.0;
@@ -687,7 +662,6 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       break;
     if (model.controls.end_cycle > 0 && cycle >= model.controls.end_cycle)
       break;
-    work_internal += pending_internal;
     work_external += pending_external;
     // Positions at t_{n+1} and the packed copy the elements gather from.
 #pragma omp parallel for schedule(static) proc_bind(close)
@@ -743,9 +717,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     }
     if (end_time > 0.0 && t + dt_next > end_time)
       dt_next = std::max(end_time - t, 1e-3 * dt_next);
-    const auto half = advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
-    work_internal += half[0] + advance_rotation(dt, dt_next, 0.5 * (dt + dt_next));
-    work_external += half[1];
+    work_external += advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
+    fix_rotations();
     if (bad_velocities > 0.0) {
       std::size_t bad = 0;
       while (bad < n && std::isfinite(s.vx[bad] + s.vy[bad] + s.vz[bad]))
