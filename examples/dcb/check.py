@@ -3,7 +3,7 @@
 
     check.py RUNDIR [--plot PNG]
 
-RUNDIR holds dcb.json, rcforc.csv, nodout.csv, glstat.csv, interface_energy.csv and
+RUNDIR holds dcb.json, bndout.csv, nodout.csv, glstat.csv, interface_energy.csv and
 cohesive.csv of `plyform run`. Prints each check with its figures; exits 1 when one fails.
 Standard library only (the plot needs matplotlib).
 """
@@ -44,19 +44,26 @@ def main(argv):
     with open(os.path.join(run, "dcb.json")) as f:
         p = json.load(f)
     cf = closed_forms(p)
-    # Tip opening from nodout, load from the interface resultant (quasi-static: the interface
-    # carries the tip load; the slave side, the upper arm, is pulled down by it).
+    # Tip opening from nodout.
     tips = {}
     for r in rows(os.path.join(run, "nodout.csv")):
         n = int(r["node"])
         if n in (p["tip_upper"], p["tip_lower"]):
             tips.setdefault(r["time"], {})[n] = float(r["uz"])
-    load = {r["time"]: -float(r["fz"]) for r in rows(os.path.join(run, "rcforc.csv"))}
+    # The load: what the prescribed motion applies to the upper tip (bndout.csv).
+    upper = set(p["tip_upper_nodes"])
+    load = {}
+    for r in rows(os.path.join(run, "bndout.csv")):
+        if int(r["node"]) in upper:
+            load[r["time"]] = load.get(r["time"], 0.0) + float(r["fz"])
     curve = []
     for t, u in tips.items():
         if len(u) == 2 and t in load:
             curve.append((float(t), u[p["tip_upper"]] - u[p["tip_lower"]], load[t]))
     curve.sort()
+    # The last output is left out: at the end time the prescribed motion's constraint already
+    # turns to the curve's end, where the tips stop, and its force holds that deceleration.
+    curve = curve[:-1]
     ok = True
 
     def check(name, value, reference, tol):
@@ -67,18 +74,30 @@ def main(argv):
         print(f"  {'ok  ' if good else 'FAIL'} {name}: {value:.5g} against {reference:.5g} "
               f"({100 * err:.2f} %, limit {100 * tol:.0f} %)")
 
-    i_peak = max(range(len(curve)), key=lambda i: curve[i][2])
-    t_peak, d_peak, p_peak = curve[i_peak]
+    # The peak of the load smoothed over 9 outputs (the ringing, below).
+    smooth = [sum(c[2] for c in curve[max(0, i - 4):i + 5]) / len(curve[max(0, i - 4):i + 5])
+              for i in range(len(curve))]
+    i_peak = max(range(len(curve)), key=lambda i: smooth[i])
+    t_peak, d_peak, p_peak = curve[i_peak][0], curve[i_peak][1], smooth[i_peak]
     print(f"DCB {run}: dx {p['dx']}, {p['ny']} across; lambda {cf['lambda']:.4f}/mm, "
           f"peak at opening {d_peak:.4g} mm")
     lin = [(d, f) for _, d, f in curve[:i_peak] if 0.1 * d_peak < d < 0.6 * d_peak]
     stiff = sum(f * d for d, f in lin) / sum(d * d for d, f in lin)  # least squares through 0
     check("linear branch stiffness P/delta [N/mm]", stiff, 1.0 / cf["compliance"], 0.05)
-    check("peak load [N]", p_peak, cf["peak"], 0.05)
+    check("peak load (9 outputs smoothed) [N]", p_peak, cf["peak"], 0.05)
+    # The tip force rings with the arms' high modes (each released node sets them going): the
+    # quasi-static branch is the mean over bins of 0.5 mm of opening.
     prop = [(d, f) for _, d, f in curve[i_peak:] if d > 1.5 * d_peak]
-    worst = max(prop, key=lambda x: abs(x[1] / cf["propagation"](x[0]) - 1))
-    check(f"propagation branch, worst point (opening {worst[0]:.3g} mm) [N]", worst[1],
-          cf["propagation"](worst[0]), 0.05)
+    bins = {}
+    for d, f in prop:
+        bins.setdefault(int((d - prop[0][0]) / 0.5), []).append((d, f))
+    means = [(sum(d for d, _ in b) / len(b), sum(f for _, f in b) / len(b))
+             for _, b in sorted(bins.items()) if len(b) >= 5]
+    worst = max(means, key=lambda x: abs(x[1] / cf["propagation"](x[0]) - 1))
+    check(f"propagation branch, worst of {len(means)} bin means (opening {worst[0]:.3g} mm) [N]",
+          worst[1], cf["propagation"](worst[0]), 0.05)
+    spread = max(abs(f / cf["propagation"](d) - 1) for d, f in prop)
+    print(f"       (single outputs ring about the branch by up to {100 * spread:.0f} %)")
     # Energy books.
     gl = rows(os.path.join(run, "glstat.csv"))
     last = gl[-1]

@@ -3,7 +3,8 @@
 
 Standard library only; runs with any Python 3.
 
-    python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N] [--name NAME]
+    python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N] [--soften F]
+                                [--name NAME]
 
 Two elastic shell arms (each its own mesh, 1.5 mm thick, 100 mm long, B = 20 mm wide) whose
 surfaces touch at t = 0; the upper arm is the slave side of *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
@@ -11,7 +12,9 @@ with the law of *USER_INTERFACE_FRICTION, its nodes beyond the starter crack a0 
 bonded (the slave side is the segment set of the upper arm's elements beyond a0). The tips
 (x = 0) are pulled apart by prescribed displacements, slowly (many periods of the arms), up to
 a total opening DELTA. Elements DX long along the arms, NY across the width (NY = 1: a strip
-one element wide). Poisson's ratio 0, so that beam theory holds for any width (see README.md).
+one element wide). --soften F divides C_N by F and sigma_max by sqrt(F): the same G_Ic with a
+cohesive zone sqrt(F) times longer (resolved by coarser elements). --ihq 0: the parts take the
+deck's default (viscous) hourglass control. Poisson's ratio 0, so that beam theory holds for any width (see README.md).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -25,6 +28,8 @@ LENGTH, WIDTH, THICKNESS, A0 = 100.0, 20.0, 1.5, 30.0
 E, NU, RHO = 135000.0, 0.0, 1.5e-9
 # Interface: G_Ic = omega = sigma_max^2 / C_N = 0.28 N/mm.
 CN, SMAX = 11600.0, 57.0
+# The bonded layer resists shear as well (C_T = C_N): without it the upper arm, held by the
+# interface alone, would be free to slide along the lower one.
 ETA = 1.0e-7  # adhesion viscosity [MPa mm s]: Lambda = eta v / (omega g_c) ~ 1e-4 (rate independent)
 VDC = 20.0
 BETA_MIN = 1.0e-3
@@ -79,7 +84,8 @@ def tip_curve(end, delta, ramp):
     return pts, v
 
 
-def deck(dx, ny, end, delta, every=5.0, ihq=4):
+def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0):
+    cn, smax = CN / soften, SMAX / soften ** 0.5  # the same omega = G_Ic
     nx = round(LENGTH / dx)
     lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS)
     upper_nodes, upper_elems = arm(100001, 100001, 2, nx, ny, 0.5 * THICKNESS)
@@ -89,7 +95,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4):
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9)]
     k += ["*DATABASE_BINARY_D3PLOT\n", card(end / 14)]
     out_dt = end / 700
-    for name in ("GLSTAT", "RCFORC", "NODOUT"):
+    for name in ("GLSTAT", "RCFORC", "NODOUT", "BNDOUT"):
         k += [f"*DATABASE_{name}\n", card(out_dt)]
     tip_upper = upper_nodes[0][0]
     tip_lower = lower_nodes[0][0]
@@ -132,23 +138,25 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4):
     k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n"]
     k += [card(1).rstrip("\n") + "mode I interface\n"]
     k += [card(1, 1, 0, 3), card(0.0), card(1.0, 1.0)]
-    #      MODEL CN  SMAX_LO SMAX_HI T_LO T_HI ETA  ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC MU_LO
-    uc = [1, CN, SMAX, SMAX, 0.0, 0.0, ETA, 0.0, 0.0, 1.0, 1.0e-3, 0, 0.0, 0.0, 0.0, 0.0,
-          0.0, VDC, BETA_MIN, 0.0]
+    #      MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC MU_LO MU_HI
+    #      VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
+    uc = [1, cn, smax, smax, 0.0, 0.0, ETA, 0.0, 0.0, 1.0, 1.0e-3, 0, 0.0, 0.0, 0.0, 0.0,
+          0.0, VDC, BETA_MIN, cn]
     k += ["*USER_INTERFACE_FRICTION\n", card(1, len(uc), 0)]
     k += ids(float(v) if isinstance(v, float) else v for v in uc)
     k += ["*END\n"]
     params = {
         "length": LENGTH, "width": WIDTH, "thickness": THICKNESS, "a0": A0, "E": E, "nu": NU,
-        "rho": RHO, "cn": CN, "sigma_max": SMAX, "eta": ETA, "vdc": VDC, "delta": delta,
+        "rho": RHO, "cn": cn, "sigma_max": smax, "eta": ETA, "vdc": VDC, "delta": delta,
         "end": end, "ramp": RAMP, "v_tip": v_tip, "dx": dx, "ny": ny, "interface": 1,
         "tip_upper": tip_upper, "tip_lower": tip_lower, "path_nodes": path,
+        "tip_upper_nodes": [n for n, x, *_ in upper_nodes if x == 0.0],
     }
     return "".join(k), params
 
 
 def main(argv):
-    outdir, dx, ny, end, name, every, ihq = ".", 0.5, 1, END, "dcb", 5.0, 4
+    outdir, dx, ny, end, name, every, ihq, soften = ".", 0.5, 1, END, "dcb", 5.0, 4, 1.0
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -158,6 +166,8 @@ def main(argv):
             ny = int(args.pop(0))
         elif a == "--end":
             end = float(args.pop(0))
+        elif a == "--soften":
+            soften = float(args.pop(0))
         elif a == "--ihq":
             ihq = int(args.pop(0))
         elif a == "--every":
@@ -169,7 +179,7 @@ def main(argv):
         else:
             outdir = a
     os.makedirs(outdir, exist_ok=True)
-    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq)
+    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften)
     with open(os.path.join(outdir, name + ".k"), "w") as f:
         f.write(text)
     with open(os.path.join(outdir, name + ".json"), "w") as f:

@@ -24,6 +24,15 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
                     std::vector<std::string>{"time", "part", "fx", "fy", "fz", "mx", "my", "mz",
                                              "x", "y", "z", "vx", "vy", "vz"});
   }
+  if (model.output.bndout_dt > 0.0 && !model.motions.empty()) {
+    for (const core::PrescribedMotion& p : model.motions)
+      bndout_nodes_.push_back(p.node);
+    std::sort(bndout_nodes_.begin(), bndout_nodes_.end());
+    bndout_nodes_.erase(std::unique(bndout_nodes_.begin(), bndout_nodes_.end()),
+                        bndout_nodes_.end());
+    bndout_.emplace(outdir / "bndout.csv",
+                    std::vector<std::string>{"time", "node", "fx", "fy", "fz"});
+  }
   if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
     rcforc_.emplace(outdir / output::rcforc_file_name);
     interface_energy_.emplace(
@@ -192,6 +201,17 @@ void ResultWriter::rigid_bodies(double time, const rigid::RigidBodies& bodies) {
     rbdout_->row({time, static_cast<double>(b.part_id), b.force[0], b.force[1], b.force[2],
                   b.moment[0], b.moment[1], b.moment[2], b.centre[0], b.centre[1], b.centre[2],
                   b.velocity[0], b.velocity[1], b.velocity[2]});
+  }
+}
+
+void ResultWriter::boundary_forces(const engine::Snapshot& s) {
+  if (!bndout_)
+    return;
+  const engine::NodalState& ns = *s.nodes;
+  for (core::Index n : bndout_nodes_) {
+    const auto i = static_cast<std::size_t>(n);
+    bndout_->row_mixed(
+        {s.time, static_cast<std::int64_t>(node_ids_[i]), ns.rx[i], ns.ry[i], ns.rz[i]});
   }
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
-// glstat.csv, nodout.csv, rbdout.csv (rigid bodies), rcforc.csv and interface_energy.csv
-// (contacts), cohesive.csv (history nodes of cohesive interfaces) and the progress line, in
-// OUTDIR.
+// glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, rcforc.csv and
+// interface_energy.csv (contacts), cohesive.csv (history nodes of cohesive interfaces) and the
+// progress line, in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -27,6 +27,7 @@ class ResultWriter : public engine::OutputSink {
   void nodout(const engine::Snapshot& s) override;
   void progress(double time, double end_time, long cycle, double dt, double wall) override;
   void rigid_bodies(double time, const rigid::RigidBodies& bodies) override;
+  void boundary_forces(const engine::Snapshot& s) override;
   void contact_forces(double time,
                       const std::vector<contact::InterfaceReport>& interfaces) override;
   void finish();
@@ -40,6 +41,8 @@ class ResultWriter : public engine::OutputSink {
   std::optional<output::NodoutFile> nodout_;
   std::optional<output::CsvHistory> rbdout_;
   std::optional<output::RcforcFile> rcforc_;
+  std::optional<output::CsvHistory> bndout_;
+  std::vector<core::Index> bndout_nodes_;  // prescribed-motion nodes, in index order
   std::optional<output::CsvHistory> interface_energy_;
   std::optional<output::CohesiveFile> cohesive_;
   bool cohesive_model_ = false;  // a cohesive interface: its arrays go into the VTU states

@@ -157,7 +157,11 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         pr->seg_radius[s] = cp.segment_offset[s] + max_slave_offset + capture + pr->margin;
         max_radius = std::max(max_radius, pr->seg_radius[s]);
       }
-      pr->far_gap = 2.0 * (capture + max_radius) + 1.0e-30;
+      // Just beyond the band where the law releases a bonded node: the node is released, and
+      // the elastic energy it is booked as giving up is that of its spring at the band's edge
+      // (a gap far beyond would book an energy the interface never held).
+      pr->far_gap = ci.cohesive ? params.release_gap * (1.0 + 1e-9) + 1.0e-30
+                                : 2.0 * (capture + max_radius) + 1.0e-30;
       // Nodes whose motion can bring a slave node within reach of a new segment.
       std::vector<char> mark(model.node_count(), 0);
       for (core::Index n : cp.slave_nodes)

@@ -617,6 +617,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   const core::OutputRequests& out = model.output;
   const double eps_t = 1e-9 * std::max(end_time, dt);
   double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
+  double next_bndout = 0.0;
   bool state_written = false;
   const auto write_outputs = [&](bool last) {
     state_written = false;
@@ -648,6 +649,11 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
       sink.nodout(snapshot());
       while (next_nodout <= t + eps_t)
         next_nodout += out.nodout_dt;
+    }
+    if (out.bndout_dt > 0.0 && (t + eps_t >= next_bndout || last)) {
+      sink.boundary_forces(snapshot());
+      while (next_bndout <= t + eps_t)
+        next_bndout += out.bndout_dt;
     }
     if (contact && out.rcforc_dt > 0.0 && (t + eps_t >= next_rcforc || last)) {
       contact_forces();

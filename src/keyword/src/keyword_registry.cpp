@@ -66,6 +66,7 @@ KeywordSpec database_binary_d3plot_keyword();
 KeywordSpec database_glstat_keyword();
 KeywordSpec database_nodout_keyword();
 KeywordSpec database_rcforc_keyword();
+KeywordSpec database_bndout_keyword();
 KeywordSpec database_history_node_keyword();
 
 std::span<const KeywordSpec> keyword_registry() {
@@ -129,6 +130,7 @@ std::span<const KeywordSpec> keyword_registry() {
       database_glstat_keyword(),
       database_nodout_keyword(),
       database_rcforc_keyword(),
+      database_bndout_keyword(),
       database_history_node_keyword(),
   };
   return kRegistry;

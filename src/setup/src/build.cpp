@@ -424,6 +424,8 @@ struct Builder {
         m.output.nodout_dt = a.dt;
       if (a.name == "RCFORC")
         m.output.rcforc_dt = a.dt;
+      if (a.name == "BNDOUT")
+        m.output.bndout_dt = a.dt;
     }
     for (const model::DatabaseHistoryNodeDesc& h : d.history_nodes) {
       for (int id : h.node_ids)

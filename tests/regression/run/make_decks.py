@@ -10,6 +10,8 @@ block_threads.k  the same load on 16 x 6 x 6 = 576 hex8 (more than one 256-eleme
                  item) with a lateral initial velocity (the threads test).
 unstable_tssfac.k   block_pull.k with TSSFAC 2.0: the step exceeds the stable limit.
 invert_element.k    block_pull.k pushed 8 mm into itself: elements turn inside out.
+block_bndout.k   block_pull.k with Poisson's ratio 0, pulled over 60 axial periods, with
+                 *DATABASE_BNDOUT (the bndout.csv test).
 bad_*.k          block_pull.k with one error each (the deck-error tests).
 """
 
@@ -18,7 +20,7 @@ import sys
 
 
 def block_deck(nx, ny, nz, title, end_time=1.0e-5, interval=1.0e-6, tssfac="0.9",
-               pull="0.01", initial_velocity=None):
+               pull="0.01", initial_velocity=None, pr="0.3", bndout=False):
     lx, ly, lz = float(nx), float(ny), float(nz)  # 1 mm cubes
 
     def nid(i, j, k):
@@ -61,7 +63,7 @@ def block_deck(nx, ny, nz, title, end_time=1.0e-5, interval=1.0e-6, tssfac="0.9"
         "         1         1",
         "*MAT_ELASTIC",
         "$      MID        RO         E        PR",
-        "         1   7.85e-9  210000.0       0.3",
+        f"         1   7.85e-9  210000.0{pr:>10}",
         "*DEFINE_CURVE",
         "$     LCID",
         "         1",
@@ -80,6 +82,8 @@ def block_deck(nx, ny, nz, title, end_time=1.0e-5, interval=1.0e-6, tssfac="0.9"
         "$     NSID       DOF       VAD      LCID        SF",
         "         2         1         2         1       1.0",
     ]
+    if bndout:
+        lines += ["*DATABASE_BNDOUT", f"{interval:10.3e}"]
     if initial_velocity is not None:
         lines += ["*INITIAL_VELOCITY_GENERATION",
                   "$       ID      STYP     OMEGA        VX        VY        VZ",
@@ -121,6 +125,8 @@ def main(argv):
                                         end_time=1.0e-4, tssfac="2.0"),
         "invert_element.k": block_deck(4, 2, 2, "Steel block pushed 8 mm into itself",
                                        pull="-8.0"),
+        "block_bndout.k": block_deck(4, 2, 2, "Steel block (Poisson 0) pulled slowly, bndout.csv",
+                                     end_time=2.0e-4, interval=2.0e-5, pr="0.0", bndout=True),
         # One error each; the line numbers named by the tests are those of these edits.
         "bad_unknown_keyword.k": replace_once(base, "*SECTION_SOLID\n", "*SECTION_SOLIDD\n"),
         "bad_number.k": replace_once(base, "   7.85e-9  210000.0", "   7.85e-9  210x00.0"),

@@ -237,6 +237,16 @@ KeywordSpec database_rcforc_keyword() {
           .summary = "The interval of rcforc.csv (the resultant force of each contact)."};
 }
 
+KeywordSpec database_bndout_keyword() {
+  return {.name = "DATABASE_BNDOUT",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "BNDOUT"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of bndout.csv (the force each prescribed-motion node receives "
+              "from its constraint: the load it takes to impose the motion)."};
+}
+
 KeywordSpec database_history_node_keyword() {
   return {.name = "DATABASE_HISTORY_NODE",
           .options = kNoneOrId,

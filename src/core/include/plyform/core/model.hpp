@@ -138,6 +138,7 @@ struct OutputRequests {
   double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
   double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
   double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
+  double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
 };
 

@@ -52,6 +52,9 @@ class OutputSink {
   /// its slave side and its energy books.
   virtual void contact_forces(double /*time*/,
                               const std::vector<contact::InterfaceReport>& /*interfaces*/) {}
+  /// At the bndout interval: the reactions of the prescribed-motion nodes are in
+  /// `s.nodes->rx, ry, rz` (the force the constraint applies to each node).
+  virtual void boundary_forces(const Snapshot& /*s*/) {}
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
