@@ -3,8 +3,8 @@
 
 Standard library only; runs with any Python 3.
 
-    python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N] [--soften F]
-                                [--name NAME]
+    python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N]
+                        [--soften F] [--width B] [--name NAME]
 
 Two elastic shell arms (each its own mesh, 1.5 mm thick, 100 mm long, B = 20 mm wide) whose
 surfaces touch at t = 0; the upper arm is the slave side of *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
@@ -14,7 +14,8 @@ bonded (the slave side is the segment set of the upper arm's elements beyond a0)
 a total opening DELTA. Elements DX long along the arms, NY across the width (NY = 1: a strip
 one element wide). --soften F divides C_N by F and sigma_max by sqrt(F): the same G_Ic with a
 cohesive zone sqrt(F) times longer (resolved by coarser elements). --ihq 0: the parts take the
-deck's default (viscous) hourglass control. Poisson's ratio 0, so that beam theory holds for any width (see README.md).
+deck's default (viscous) hourglass control. --width B: the specimen's width (20 mm).
+Poisson's ratio 0, so that beam theory holds for any width (see README.md).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -60,11 +61,11 @@ def ids(values):
     return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
 
 
-def arm(first_node, first_elem, part, nx, ny, z):
+def arm(first_node, first_elem, part, nx, ny, z, width):
     nodes, elems = [], []
     for j in range(ny + 1):
         for i in range(nx + 1):
-            nodes.append((first_node + j * (nx + 1) + i, LENGTH * i / nx, WIDTH * j / ny, z))
+            nodes.append((first_node + j * (nx + 1) + i, LENGTH * i / nx, width * j / ny, z))
     for j in range(ny):
         for i in range(nx):
             a = first_node + j * (nx + 1) + i
@@ -84,17 +85,17 @@ def tip_curve(end, delta, ramp):
     return pts, v
 
 
-def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0):
+def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH):
     cn, smax = CN / soften, SMAX / soften ** 0.5  # the same omega = G_Ic
     nx = round(LENGTH / dx)
-    lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS)
-    upper_nodes, upper_elems = arm(100001, 100001, 2, nx, ny, 0.5 * THICKNESS)
+    lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS, width)
+    upper_nodes, upper_elems = arm(100001, 100001, 2, nx, ny, 0.5 * THICKNESS, width)
     curve, v_tip = tip_curve(end, delta, min(RAMP, 0.25 * end))
     k = ["*KEYWORD\n", "*TITLE\n", f"plyform DCB (dx {dx}, {ny} across)\n"]
     k += ["*CONTROL_TERMINATION\n", card(end)]
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9)]
     k += ["*DATABASE_BINARY_D3PLOT\n", card(end / 14)]
-    out_dt = end / 700
+    out_dt = END / 700  # the same instants for any end time
     for name in ("GLSTAT", "RCFORC", "NODOUT", "BNDOUT"):
         k += [f"*DATABASE_{name}\n", card(out_dt)]
     tip_upper = upper_nodes[0][0]
@@ -146,7 +147,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0):
     k += ids(float(v) if isinstance(v, float) else v for v in uc)
     k += ["*END\n"]
     params = {
-        "length": LENGTH, "width": WIDTH, "thickness": THICKNESS, "a0": A0, "E": E, "nu": NU,
+        "length": LENGTH, "width": width, "thickness": THICKNESS, "a0": A0, "E": E, "nu": NU,
         "rho": RHO, "cn": cn, "sigma_max": smax, "eta": ETA, "vdc": VDC, "delta": delta,
         "end": end, "ramp": RAMP, "v_tip": v_tip, "dx": dx, "ny": ny, "interface": 1,
         "tip_upper": tip_upper, "tip_lower": tip_lower, "path_nodes": path,
@@ -157,6 +158,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0):
 
 def main(argv):
     outdir, dx, ny, end, name, every, ihq, soften = ".", 0.5, 1, END, "dcb", 5.0, 4, 1.0
+    width = WIDTH
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -166,6 +168,8 @@ def main(argv):
             ny = int(args.pop(0))
         elif a == "--end":
             end = float(args.pop(0))
+        elif a == "--width":
+            width = float(args.pop(0))
         elif a == "--soften":
             soften = float(args.pop(0))
         elif a == "--ihq":
@@ -179,7 +183,7 @@ def main(argv):
         else:
             outdir = a
     os.makedirs(outdir, exist_ok=True)
-    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften)
+    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften, width)
     with open(os.path.join(outdir, name + ".k"), "w") as f:
         f.write(text)
     with open(os.path.join(outdir, name + ".json"), "w") as f:

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Double cantilever beam (mode I) of two bonded shell arms: generate the decks, run them with
+# `plyform run`, and check each against beam theory (check.py; derivation in README.md):
+#   strip    one element across (0.5 x 20 mm elements, 40:1), the whole opening, 1 thread
+#   square   a 2 mm wide specimen meshed 4 across (0.5 x 0.5 mm), up to 6 ms (past the peak)
+#   threads  the strip with 2 threads up to 4 ms: glstat.csv as the strip's, to the bit
+#   viscous  the unsoftened interface under the viscous hourglass form: run must warn
+# The first three with --soften 10 (C_N 1160 MPa/mm, sigma_max 18 MPa: the same G_Ic, a cohesive zone of
+# about 3 mm that 0.5 mm elements resolve).
+#
+#   run.sh [PLYFORM] [OUTDIR]
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(cd "${here}/../.." && pwd)"
+plyform="${1:-${repo}/build/plyform}"
+outdir="${2:-dcb_out}"
+if [[ ! -x "${plyform}" ]]; then
+  echo "run.sh: error: plyform binary '${plyform}' not found or not executable" >&2
+  echo "run.sh: usage: run.sh [PLYFORM] [OUTDIR]" >&2
+  exit 2
+fi
+mkdir -p "${outdir}"
+outdir="$(cd "${outdir}" && pwd)"
+check_python=/usr/bin/python3
+gen_python="$(command -v python3 || echo "${check_python}")"
+
+one() {  # one SUBDIR THREADS GENERATOR-OPTIONS...
+  local sub=$1 threads=$2
+  shift 2
+  "${gen_python}" "${here}/generate.py" "${outdir}/${sub}" --soften 10 "$@"
+  echo "run.sh: plyform run ${sub}/dcb.k --threads ${threads}"
+  "${plyform}" run "${outdir}/${sub}/dcb.k" -o "${outdir}/${sub}" --threads "${threads}" \
+    </dev/null | tail -n 3
+}
+status=0
+one strip 1 --dx 0.5 --ny 1 --every 0.5
+"${check_python}" "${here}/check.py" "${outdir}/strip" --plot "${outdir}/strip/load_opening.png" ||
+  status=1
+one square 1 --dx 0.5 --ny 4 --width 2 --end 0.006 --every 0.5
+"${check_python}" "${here}/check.py" "${outdir}/square" --plot "${outdir}/square/load_opening.png" ||
+  status=1
+# The strip's deck with 2 threads, stopped at 4 ms: every glstat row of it (but its last, at
+# its own end time) is the strip's, to the bit.
+mkdir -p "${outdir}/threads"
+sed '/^\*CONTROL_TERMINATION/{n;s/.*/     0.004/}' "${outdir}/strip/dcb.k" >"${outdir}/threads/dcb.k"
+echo "run.sh: plyform run threads/dcb.k --threads 2"
+"${plyform}" run "${outdir}/threads/dcb.k" -o "${outdir}/threads" --threads 2 </dev/null |
+  tail -n 3
+rows=$(($(wc -l <"${outdir}/threads/glstat.csv") - 1))
+if head -n "${rows}" "${outdir}/threads/glstat.csv" | cmp -s - <(head -n "${rows}" "${outdir}/strip/glstat.csv"); then
+  echo "run.sh: ok   2 threads: the first ${rows} glstat rows are the 1-thread run's"
+else
+  echo "run.sh: FAIL 2 threads: glstat.csv differs from the 1-thread run"
+  status=1
+fi
+# The standing check of the energy books: the original interface (not softened) with the
+# viscous hourglass form of the deck's defaults. Its zero-energy modes grow under the
+# interface's nodal forces; `plyform run` must say so by 8 ms, naming the part.
+"${gen_python}" "${here}/generate.py" "${outdir}/viscous" --dx 0.5 --ny 1 --ihq 0
+sed -i '/^\*CONTROL_TERMINATION/{n;s/.*/     0.008/}' "${outdir}/viscous/dcb.k"
+echo "run.sh: plyform run viscous/dcb.k (IHQ 1) --threads 1"
+"${plyform}" run "${outdir}/viscous/dcb.k" -o "${outdir}/viscous" --threads 1 </dev/null \
+  2>"${outdir}/viscous/stderr.txt" | tail -n 1
+if grep -q "warning: hourglass energy .* of the internal energy .*: most in part [12] " \
+  "${outdir}/viscous/stderr.txt"; then
+  echo "run.sh: ok   viscous hourglass: $(grep -o 'hourglass energy .* at t = [0-9.e-]*' \
+    "${outdir}/viscous/stderr.txt")"
+else
+  echo "run.sh: FAIL viscous hourglass: no warning naming the part"
+  cat "${outdir}/viscous/stderr.txt"
+  status=1
+fi
+echo "run.sh: done; results in ${outdir} (strip/, square/, threads/, viscous/)"
+exit "${status}"
