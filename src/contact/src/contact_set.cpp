@@ -99,9 +99,10 @@ struct PassRuntime {
   // Directors: the nodal normals at t = 0, then turned with their nodes' rotations, so that
   // the offset surfaces are functions of the nodes' freedoms (positions and rotations) and the
   // forces and moments on them are exactly the gradient of the interface's energy.
-  std::vector<double> master_normal;  // 3 per master node
-  std::vector<double> slave_normal;   // 3 per slave node (zero: none, the contact normal is used)
-  std::vector<double> rs, prev_rs;    // 3 per slave: its surface point minus the node
+  std::vector<double> master_normal;     // 3 per master node
+  std::vector<signed char> corner_sign;  // per segment corner: its director against the segment
+  std::vector<double> slave_normal;  // 3 per slave node (zero: none, the contact normal is used)
+  std::vector<double> rs, prev_rs;   // 3 per slave: its surface point minus the node
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -222,6 +223,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
           pr->node_seg[fill[i]++] = static_cast<core::Index>(c / 4);
         }
         pr->master_normal.assign(3 * pr->master_nodes.size(), 0.0);
+        pr->corner_sign.assign(cp.segments.size(), 1);
       }
       passes_.push_back(std::move(pr));
     }
@@ -344,6 +346,60 @@ struct Located {
   double rs[3] = {0, 0, 0};  // slave surface point minus the slave node
 };
 
+// Offset vector of corner j of segment s for a slave on `side`: along the corner's director,
+// turned to the slave's side (the director's sign relative to the segment, fixed at t = 0).
+inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side, double r[3]) {
+  const double o = side * pr.seg_offset[s] * pr.corner_sign[4 * s + static_cast<std::size_t>(j)];
+  const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * s + j])];
+  r[0] = o * d[0], r[1] = o * d[1], r[2] = o * d[2];
+}
+
+// Projects the surface point of slave k, on `side` of segment s, on the segment's offset
+// surface. `n`: about the contact normal (orients the slave's director).
+void project_surface(const PassRuntime& pr, std::size_t k, core::Index s, const double* n,
+                     const double* packed, const double* guess, Located& L) {
+  const core::ContactPass& cp = *pr.pass;
+  const auto su = static_cast<std::size_t>(s);
+  const core::Index* q = &cp.segments[4 * su];
+  const double* p = at(packed, cp.slave_nodes[k]);
+  const double om = pr.seg_offset[su];
+  const double os = pr.slave_offset[k];
+  // The slave surface point, on the side facing the master: along the node's own director, or
+  // along the contact normal where the node has none (a sphere of radius o_s).
+  L.rs[0] = L.rs[1] = L.rs[2] = 0.0;
+  if (os > 0.0) {
+    const double* dir = &pr.slave_normal[3 * k];
+    if (dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0) {
+      offset_vector(-os, dir, n, L.rs);
+    } else {
+      L.rs[0] = -os * n[0], L.rs[1] = -os * n[1], L.rs[2] = -os * n[2];
+    }
+  }
+  const double xs[3] = {p[0] + L.rs[0], p[1] + L.rs[1], p[2] + L.rs[2]};
+  double c[4][3];
+  for (int j = 0; j < 4; ++j) {
+    const double* x = at(packed, q[j]);
+    c[j][0] = x[0], c[j][1] = x[1], c[j][2] = x[2];
+    if (om > 0.0) {
+      double r[3];
+      corner_offset(pr, su, j, L.side, r);
+      c[j][0] += r[0], c[j][1] += r[1], c[j][2] += r[2];
+    }
+  }
+  if (q[2] == q[3]) {
+    L.sp = project_triangle(xs, c[0], c[1], c[2]);
+    return;
+  }
+  const double* cc[4] = {c[0], c[1], c[2], c[3]};
+  if (guess == nullptr) {
+    L.sp = project_quad(xs, cc);
+  } else {
+    // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
+    L.sp = project_quad(xs, cc, guess[1] + guess[2] - guess[0] - guess[3],
+                        guess[2] + guess[3] - guess[0] - guess[1]);
+  }
+}
+
 // Projects slave k on segment s. The side: the node's own while it is in contact or bonded;
 // a free node (approaching, detached) takes the side its mid-surface is on once it is clear of
 // both surfaces, or when it had no segment last cycle (it cannot have come through). `guess`:
@@ -352,71 +408,40 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
                    const double* packed, const double* guess) {
   const core::ContactPass& cp = *pr.pass;
   const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
-  const double* p = at(packed, cp.slave_nodes[k]);
-  const double om = pr.seg_offset[static_cast<std::size_t>(s)];
-  const double os = pr.slave_offset[k];
+  const double offsets = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
+  Located L;
+  L.side = pr.side[k];
+  double n[3];
+  if (L.side != 0 && was_located) {
+    // Last cycle's contact normal orients the slave's director (it turns slowly).
+    const double* fr = &pr.frame[9 * k];
+    n[0] = fr[0], n[1] = fr[1], n[2] = fr[2];
+    project_surface(pr, k, s, n, packed, guess, L);
+    // A free node whose mid-surface is beyond the master's on the other side (its gap on this
+    // side below minus twice the offsets) changes side.
+    if (!(free && L.side * L.sp.distance < -2.0 * offsets))
+      return L;
+    L.side = static_cast<signed char>(-L.side);
+    n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
+    project_surface(pr, k, s, n, packed, guess, L);
+    return L;
+  }
+  // No segment last cycle: the side of the mid plane (through the centroid) the node is on.
   double ns[3];
   segment_normal(q, packed, ns);
-  Located L;
-  {
-    // Distance of the node from the segment's mid plane (through its centroid).
-    double dm = 0.0;
-    const int nn = q[2] == q[3] ? 3 : 4;
-    for (int d = 0; d < 3; ++d) {
-      double c = 0.0;
-      for (int j = 0; j < nn; ++j)
-        c += at(packed, q[j])[d];
-      dm += (p[d] - c / nn) * ns[d];
-    }
-    signed char side = pr.side[k];
-    if (side == 0 || (free && (!was_located || std::fabs(dm) > os + om)))
-      side = dm >= 0.0 ? 1 : -1;
-    L.side = side;
+  const double* p = at(packed, cp.slave_nodes[k]);
+  double dm = 0.0;
+  const int nn = q[2] == q[3] ? 3 : 4;
+  for (int d = 0; d < 3; ++d) {
+    double c = 0.0;
+    for (int j = 0; j < nn; ++j)
+      c += at(packed, q[j])[d];
+    dm += (p[d] - c / nn) * ns[d];
   }
-  const double n[3] = {L.side * ns[0], L.side * ns[1], L.side * ns[2]};
-  // The slave surface point, on the side facing the master: along the node's own normal, or
-  // along the segment's where the node has none (a sphere of radius o_s).
-  const double* dir = &pr.slave_normal[3 * k];
-  const bool own_normal = dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0;
-  double xs[3];
-  if (os > 0.0) {
-    double ds[3];
-    if (own_normal) {
-      offset_vector(os, dir, n, ds);
-    } else {
-      ds[0] = os * n[0], ds[1] = os * n[1], ds[2] = os * n[2];
-    }
-    for (int d = 0; d < 3; ++d)
-      L.rs[d] = -ds[d];
-  }
-  for (int d = 0; d < 3; ++d)
-    xs[d] = p[d] + L.rs[d];
-  // The segment's offset surface on the node's side.
-  double c[4][3];
-  for (int j = 0; j < 4; ++j) {
-    const double* x = at(packed, q[j]);
-    c[j][0] = x[0], c[j][1] = x[1], c[j][2] = x[2];
-    if (om > 0.0) {
-      double r[3];
-      offset_vector(om,
-                    &pr.master_normal[3 * static_cast<std::size_t>(
-                                              pr.corner[4 * static_cast<std::size_t>(s) + j])],
-                    n, r);
-      c[j][0] += r[0], c[j][1] += r[1], c[j][2] += r[2];
-    }
-  }
-  if (q[2] == q[3]) {
-    L.sp = project_triangle(xs, c[0], c[1], c[2]);
-  } else {
-    const double* cc[4] = {c[0], c[1], c[2], c[3]};
-    if (guess == nullptr) {
-      L.sp = project_quad(xs, cc);
-    } else {
-      // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
-      L.sp = project_quad(xs, cc, guess[1] + guess[2] - guess[0] - guess[3],
-                          guess[2] + guess[3] - guess[0] - guess[1]);
-    }
-  }
+  if (L.side == 0 || free)
+    L.side = dm >= 0.0 ? 1 : -1;
+  n[0] = L.side * ns[0], n[1] = L.side * ns[1], n[2] = L.side * ns[2];
+  project_surface(pr, k, s, n, packed, guess, L);
   return L;
 }
 
@@ -570,44 +595,45 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
 
 // Velocity of slave k's surface point relative to the surface point of segment s below it,
 // (v_s + w_s x r_s) - sum N_j (v_j + w_j x r_j), with r the offset vectors (the master's along
-// its nodal normals, turned to the side n points to). Rotations count at nodes that have them.
-void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index s, const double* shape,
-                       const double* rs, const double* n, const double* packed,
-                       const Rotations& rot, double du[3]) {
+// its directors, turned to the slave's side). Rotations count at nodes that have them.
+inline void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index s,
+                              const double* shape, const double* rs, int side, const double* packed,
+                              const Rotations& rot, double du[3]) {
   const core::ContactPass& cp = *pr.pass;
   const auto sn = static_cast<std::size_t>(cp.slave_nodes[k]);
   const double* p = at(packed, cp.slave_nodes[k]);
-  du[0] = p[3], du[1] = p[4], du[2] = p[5];
+  // Summed in locals (not through du, which the compiler must assume may alias the inputs).
+  double u0 = p[3], u1 = p[4], u2 = p[5];
   const bool spin = rot.inertia != nullptr;
   if (spin && rot.inertia[sn] > 0.0) {
-    const double w[3] = {rot.wx[sn], rot.wy[sn], rot.wz[sn]};
-    du[0] += w[1] * rs[2] - w[2] * rs[1];
-    du[1] += w[2] * rs[0] - w[0] * rs[2];
-    du[2] += w[0] * rs[1] - w[1] * rs[0];
+    const double w0 = rot.wx[sn], w1 = rot.wy[sn], w2 = rot.wz[sn];
+    u0 += w1 * rs[2] - w2 * rs[1];
+    u1 += w2 * rs[0] - w0 * rs[2];
+    u2 += w0 * rs[1] - w1 * rs[0];
   }
   const auto su = static_cast<std::size_t>(s);
   const core::Index* q = &cp.segments[4 * su];
-  const double om = pr.seg_offset[su];
+  const bool offset_spin = spin && pr.seg_offset[su] > 0.0;
   for (int j = 0; j < 4; ++j) {
     const double nj = shape[j];
     if (nj == 0.0)
       continue;
     const double* v = at(packed, q[j]);
-    double vj[3] = {v[3], v[4], v[5]};
+    double v0 = v[3], v1 = v[4], v2 = v[5];
     const auto m = static_cast<std::size_t>(q[j]);
-    if (spin && om > 0.0 && rot.inertia[m] > 0.0) {
+    if (offset_spin && rot.inertia[m] > 0.0) {
       double r[3];
-      offset_vector(om, &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * su + j])], n,
-                    r);
-      const double w[3] = {rot.wx[m], rot.wy[m], rot.wz[m]};
-      vj[0] += w[1] * r[2] - w[2] * r[1];
-      vj[1] += w[2] * r[0] - w[0] * r[2];
-      vj[2] += w[0] * r[1] - w[1] * r[0];
+      corner_offset(pr, su, j, side, r);
+      const double w0 = rot.wx[m], w1 = rot.wy[m], w2 = rot.wz[m];
+      v0 += w1 * r[2] - w2 * r[1];
+      v1 += w2 * r[0] - w0 * r[2];
+      v2 += w0 * r[1] - w1 * r[0];
     }
-    du[0] -= nj * vj[0];
-    du[1] -= nj * vj[1];
-    du[2] -= nj * vj[2];
+    u0 -= nj * v0;
+    u1 -= nj * v1;
+    u2 -= nj * v2;
   }
+  du[0] = u0, du[1] = u1, du[2] = u2;
 }
 
 // Geometry and law inputs of every slave node of a pass at the current positions; the first
@@ -644,7 +670,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       const double* f = &pr.prev_force[3 * k];
       double du[3];
       relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
-                        &pr.frame[9 * k], packed, rot, du);
+                        pr.side[k], packed, rot, du);
       w -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work_part[k] = w;
@@ -698,7 +724,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // Relative displacement of the step: the slave's surface point minus the segment's
     // surface point (same shape functions as the force distribution).
     double du[3];
-    relative_velocity(pr, k, s, L.sp.shape, rs, n, packed, rot, du);
+    relative_velocity(pr, k, s, L.sp.shape, rs, L.side, packed, rot, du);
     double mm = 0.0;
     if (pr.need_mass) {
       for (int j = 0; j < 4; ++j) {
@@ -728,6 +754,14 @@ void init_directors(PassRuntime& pr, const double* packed) {
           return &cp.segments[4 * static_cast<std::size_t>(pr.node_seg[b + f])];
         },
         packed, &pr.master_normal[3 * i]);
+  }
+  // Each corner's director against its segment's normal: the sign that turns it to the side
+  // of the segment a slave node is on. Fixed: directors and segments turn together.
+  for (std::size_t c = 0; c < pr.corner_sign.size(); ++c) {
+    double ns[3];
+    segment_normal(&cp.segments[c - c % 4], packed, ns);
+    const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[c])];
+    pr.corner_sign[c] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
   }
   if (cp.slave_face_start.empty())
     return;
@@ -867,7 +901,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
         continue;
       double du[3];
-      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], fr, packed, rot_, du);
+      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], pr.side[k], packed, rot_, du);
       pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
@@ -911,10 +945,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         fz[m] += nj * f[2];
         if (spin && om > 0.0 && rot_.inertia[m] > 0.0) {
           double rm_[3];
-          offset_vector(om,
-                        &pr.master_normal[3 * static_cast<std::size_t>(
-                                                  pr.corner[4 * su + static_cast<std::size_t>(j)])],
-                        &pr.frame[9 * k], rm_);
+          corner_offset(pr, su, j, pr.side[k], rm_);
           rot_.mx[m] += nj * (rm_[1] * f[2] - rm_[2] * f[1]);
           rot_.my[m] += nj * (rm_[2] * f[0] - rm_[0] * f[2]);
           rot_.mz[m] += nj * (rm_[0] * f[1] - rm_[1] * f[0]);
