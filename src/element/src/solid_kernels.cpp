@@ -79,13 +79,6 @@ void update_material(const M& m, std::size_t n, PointScratch& s, double dt, Soli
   }
 }
 
-// sigma : D at stress point q of the block state, D from scratch point p (tensor shears).
-inline double stress_power(const SolidBlockState& st, std::size_t q, const PointScratch& s,
-                           std::size_t p) {
-  return st.s[0][q] * s.d[0][p] + st.s[1][q] * s.d[1][p] + st.s[2][q] * s.d[2][p] +
-         2.0 * (st.s[3][q] * s.d[3][p] + st.s[4][q] * s.d[4][p] + st.s[5][q] * s.d[5][p]);
-}
-
 // L on the configuration at t_{n+1} mapped to the mid-step configuration:
 // L_m = L (I - dt/2 L)^-1. A rigid rotation then gives an exactly skew L_m (Hughes-Winget), so
 // the hypoelastic update stays objective however far an element turns.
@@ -383,12 +376,22 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
     }
     // Stress work of the step, midpoint rule: (sigma_n + sigma_{n+1}) / 2 : D dt V.
-    double power_old[kLanes];
-    for (std::size_t k = 0; k < n; ++k)
-      power_old[k] = stress_power(st, c0 + k, s, k);
+    // Component by component over the lanes (contiguous: vectorised).
+    double power_sum[kLanes] = {};
+    const auto add_power = [&] {
+      for (int c = 0; c < 6; ++c) {
+        const double w = c < 3 ? 1.0 : 2.0;  // tensor shears count twice
+        const double* sc = &st.s[c][c0];
+        const double* dc = s.d[c];
+        for (std::size_t k = 0; k < n; ++k)
+          power_sum[k] += w * sc[k] * dc[k];
+      }
+    };
+    add_power();
     update_material(mat, n, s, dt, st, c0);
+    add_power();
     for (std::size_t k = 0; k < n; ++k)
-      r.internal_energy += 0.5 * (power_old[k] + stress_power(st, c0 + k, s, k)) * vol[k] * dt;
+      r.internal_energy += 0.5 * power_sum[k] * vol[k] * dt;
 
     for (int c = 0; c < 6; ++c)
       for (std::size_t k = 0; k < kLanes; ++k)
@@ -500,14 +503,22 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         r.dt_element = e;
       }
     }
-    double power_old[kChunk];
-    for (std::size_t p = 0; p < 8 * n; ++p)
-      power_old[p] = stress_power(st, 8 * c0 + p, s, p);
+    double power_sum[kChunk] = {};
+    const std::size_t np = 8 * n;
+    const auto add_power = [&] {
+      for (int c = 0; c < 6; ++c) {
+        const double w = c < 3 ? 1.0 : 2.0;  // tensor shears count twice
+        const double* sc = &st.s[c][8 * c0];
+        const double* dc = s.d[c];
+        for (std::size_t p = 0; p < np; ++p)
+          power_sum[p] += w * sc[p] * dc[p];
+      }
+    };
+    add_power();
     update_material(mat, 8 * n, s, dt, st, 8 * c0);
-    for (std::size_t p = 0; p < 8 * n; ++p) {
-      const double w = gg[p / 8].weight_det[p % 8];
-      r.internal_energy += 0.5 * (power_old[p] + stress_power(st, 8 * c0 + p, s, p)) * w * dt;
-    }
+    add_power();
+    for (std::size_t p = 0; p < np; ++p)
+      r.internal_energy += 0.5 * power_sum[p] * gg[p / 8].weight_det[p % 8] * dt;
 
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;
