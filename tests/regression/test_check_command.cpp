@@ -181,14 +181,15 @@ TEST(CheckCommand, ListsTheContacts) {
 // The shipped fundamental model: the build's view of its cohesive contact. 25 slave nodes (the
 // 4 x 4 upper plate) against 36 segments (the 6 x 6 lower plate), half of 1 mm on both sides,
 // following the thickness (a cohesive interface); interior slave nodes carry 0.1 K A / d of a
-// 2.5 mm shell over its area: 0.1 * 166667 / 3.5355 = 4714 per length.
+// 2.5 mm shell over its area: 0.1 * 166667 / 3.5355 = 4714 per length; the 2 mm master segments
+// 0.1 * 166667 / 2.8284 = 5893; PENOPT 1 takes the smaller.
 TEST(CheckCommand, ShowsTheContactAsBuilt) {
   const CheckRun r = check(std::filesystem::path(PLYFORM_SOURCE_DIR) / "examples" / "fundamental" /
                            "fundamental.k");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("  contact 1 pass 1: 25 slave nodes against 36 segments; offsets slave "
-                       "0.5, master 0.5 (following the thickness); slave penalty per area 4714 "
-                       "(SOFT 0)\n"),
+                       "0.5, master 0.5 (following the thickness); penalty per area slave 4714, "
+                       "master 5893, PENOPT 1: the smaller (SOFT 0)\n"),
             std::string::npos)
       << r.out;
 }

@@ -79,6 +79,10 @@ struct PassRuntime {
   std::vector<double> frame;              // 9 each: normal (slave side), e1, e2
   std::vector<signed char> side;
   std::vector<double> gap, slip_x, slip_y, temperature, k_normal, k_tangent, m_eff;
+  // Penetration tolerated (<= 0): the depth at which a node arrived inside the band of the
+  // offsets from beyond the master's edge, shrinking as it comes out (measure()).
+  std::vector<double> arrival_depth;
+  bool measured = false;  // a first cycle has been measured (initial penetrations push out)
   std::vector<double> pressure, tau_x, tau_y, stored;
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
@@ -96,13 +100,23 @@ struct PassRuntime {
   std::vector<core::Index> corner;          // per segment corner: index into master_nodes
   std::vector<std::size_t> node_seg_start;  // CSR master node -> segments around it
   std::vector<core::Index> node_seg;
-  // Directors: the nodal normals at t = 0, then turned with their nodes' rotations, so that
-  // the offset surfaces are functions of the nodes' freedoms (positions and rotations) and the
-  // forces and moments on them are exactly the gradient of the interface's energy.
-  std::vector<double> master_normal;     // 3 per master node
-  std::vector<signed char> corner_sign;  // per segment corner: its director against the segment
-  std::vector<double> slave_normal;  // 3 per slave node (zero: none, the contact normal is used)
-  std::vector<double> rs, prev_rs;   // 3 per slave: its surface point minus the node
+  // The master's nodal normals, recomputed every cycle from the current positions (the mean
+  // of the normals of the segments around each node, each turned by its fixed sign to agree
+  // with the node's normal at t = 0). They are geometry, not the shells' nodal rotations: a
+  // rotation of a one-point shell's node is held against its element's mid-surface only by the
+  // weak rotational hourglass control, and a surface that followed it would let a contact
+  // pressure tip it further (the pressure at the offset point makes a couple that grows with
+  // the tilt), which an explicit run cannot survive under forming pressures.
+  std::vector<double> master_normal;       // 3 per master node
+  std::vector<double> seg_normal;          // 3 per segment, current
+  std::vector<signed char> corner_sign;    // per segment corner: its nodal normal against it
+  std::vector<signed char> node_seg_sign;  // per node_seg entry: the same sign
+  // The slave nodes' normals, the same way from the faces around them (none for a node set's
+  // node without faces: its offset then follows the contact normal).
+  std::vector<double> slave_normal;          // 3 per slave node
+  std::vector<double> slave_face_normal;     // 3 per slave face, current
+  std::vector<signed char> slave_face_sign;  // per slave_face_index entry
+  std::vector<double> rs, prev_rs;           // 3 per slave: its surface point minus the node
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -180,15 +194,17 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
       pr->side.assign(ns, 0);
-      for (auto* v :
-           {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal, &pr->k_tangent,
-            &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y, &pr->stored, &pr->work_part})
+      for (auto* v : {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal,
+                      &pr->k_tangent, &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y,
+                      &pr->stored, &pr->work_part, &pr->arrival_depth})
         v->assign(ns, 0.0);
       pr->force.assign(3 * ns, 0.0);
       pr->prev_force.assign(3 * ns, 0.0);
       pr->rs.assign(3 * ns, 0.0);
-      pr->slave_normal.assign(3 * ns, 0.0);
       pr->prev_rs.assign(3 * ns, 0.0);
+      pr->slave_normal.assign(3 * ns, 0.0);
+      pr->slave_face_normal.assign(3 * (cp.slave_faces.size() / 4), 0.0);
+      pr->slave_face_sign.assign(cp.slave_face_index.size(), 1);
       for (double o : cp.segment_offset)
         pr->master_offsets = pr->master_offsets || o > 0.0;
       if (cp.offsets_follow_thickness) {
@@ -223,7 +239,9 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
           pr->node_seg[fill[i]++] = static_cast<core::Index>(c / 4);
         }
         pr->master_normal.assign(3 * pr->master_nodes.size(), 0.0);
+        pr->seg_normal.assign(3 * (cp.segments.size() / 4), 0.0);
         pr->corner_sign.assign(cp.segments.size(), 1);
+        pr->node_seg_sign.assign(pr->node_seg.size(), 1);
       }
       passes_.push_back(std::move(pr));
     }
@@ -317,27 +335,6 @@ void mean_normal(std::size_t count, FaceOf&& face, const double* packed, double 
     out[0] /= len, out[1] /= len, out[2] /= len;
 }
 
-// Turns a unit director d by the rotation vector phi (Rodrigues: exact for any angle).
-inline void turn_director(double px, double py, double pz, double* d) {
-  const double a2 = px * px + py * py + pz * pz;
-  if (!(a2 > 0.0))
-    return;
-  const double a = std::sqrt(a2);
-  const double s1 = std::sin(a) / a, c1 = (1.0 - std::cos(a)) / a2;
-  const double cx = py * d[2] - pz * d[1], cy = pz * d[0] - px * d[2], cz = px * d[1] - py * d[0];
-  const double ccx = py * cz - pz * cy, ccy = pz * cx - px * cz, ccz = px * cy - py * cx;
-  d[0] += s1 * cx + c1 * ccx;
-  d[1] += s1 * cy + c1 * ccy;
-  d[2] += s1 * cz + c1 * ccz;
-}
-
-// The offset vector of a node of offset `o` along its nodal normal `nn`, turned to the side
-// `n` points to (zero for a zero offset or no normal).
-inline void offset_vector(double o, const double* nn, const double* n, double r[3]) {
-  const double sg = nn[0] * n[0] + nn[1] * n[1] + nn[2] * n[2] < 0.0 ? -o : o;
-  r[0] = sg * nn[0], r[1] = sg * nn[1], r[2] = sg * nn[2];
-}
-
 /// A slave node against one segment: the projection of its surface point on the segment's
 /// offset surface, the side it is on, and where that surface point lies.
 struct Located {
@@ -346,36 +343,45 @@ struct Located {
   double rs[3] = {0, 0, 0};  // slave surface point minus the slave node
 };
 
-// Offset vector of corner j of segment s for a slave on `side`: along the corner's director,
-// turned to the slave's side (the director's sign relative to the segment, fixed at t = 0).
+// Offset vector of corner j of segment s for a slave on `side`: along the corner's nodal
+// normal, turned to the slave's side (the normal's sign relative to the segment, fixed at t = 0).
 inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side, double r[3]) {
   const double o = side * pr.seg_offset[s] * pr.corner_sign[4 * s + static_cast<std::size_t>(j)];
   const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * s + j])];
   r[0] = o * d[0], r[1] = o * d[1], r[2] = o * d[2];
 }
 
-// Projects the surface point of slave k, on `side` of segment s, on the segment's offset
-// surface. `n`: about the contact normal (orients the slave's director).
-void project_surface(const PassRuntime& pr, std::size_t k, core::Index s, const double* n,
-                     const double* packed, const double* guess, Located& L) {
+// Projects slave k, on `side` of segment s, on the segment's offset surface. The slave's
+// surface point is the node moved by its offset o_s towards the master along its nodal normal
+// (geometry, like the master's), so that the point lies on the layer's face: a node going
+// round a faceted tool's kink then sees the gap of its face, not of a point o_s above it. A
+// node without faces is moved along the contact normal (the gap is its distance minus o_s).
+// `towards`: about the contact normal (last cycle's), or null to take the segment's.
+void project_surface(const PassRuntime& pr, std::size_t k, core::Index s, const double* packed,
+                     const double* guess, const double* towards, Located& L) {
   const core::ContactPass& cp = *pr.pass;
   const auto su = static_cast<std::size_t>(s);
   const core::Index* q = &cp.segments[4 * su];
   const double* p = at(packed, cp.slave_nodes[k]);
   const double om = pr.seg_offset[su];
   const double os = pr.slave_offset[k];
-  // The slave surface point, on the side facing the master: along the node's own director, or
-  // along the contact normal where the node has none (a sphere of radius o_s).
-  L.rs[0] = L.rs[1] = L.rs[2] = 0.0;
-  if (os > 0.0) {
-    const double* dir = &pr.slave_normal[3 * k];
-    if (dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0) {
-      offset_vector(-os, dir, n, L.rs);
+  const double* dir = &pr.slave_normal[3 * k];
+  const bool along_normal = os > 0.0 && (dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0);
+  if (along_normal) {
+    // Towards the master: against the contact normal (side times the segment's normal).
+    double nc[3];
+    if (towards != nullptr) {
+      nc[0] = towards[0], nc[1] = towards[1], nc[2] = towards[2];
     } else {
-      L.rs[0] = -os * n[0], L.rs[1] = -os * n[1], L.rs[2] = -os * n[2];
+      segment_normal(q, packed, nc);
+      nc[0] *= L.side, nc[1] *= L.side, nc[2] *= L.side;
     }
+    const double sg = dir[0] * nc[0] + dir[1] * nc[1] + dir[2] * nc[2] < 0.0 ? os : -os;
+    L.rs[0] = sg * dir[0], L.rs[1] = sg * dir[1], L.rs[2] = sg * dir[2];
   }
-  const double xs[3] = {p[0] + L.rs[0], p[1] + L.rs[1], p[2] + L.rs[2]};
+  const double xs[3] = {p[0] + (along_normal ? L.rs[0] : 0.0),
+                        p[1] + (along_normal ? L.rs[1] : 0.0),
+                        p[2] + (along_normal ? L.rs[2] : 0.0)};
   double c[4][3];
   for (int j = 0; j < 4; ++j) {
     const double* x = at(packed, q[j]);
@@ -388,15 +394,20 @@ void project_surface(const PassRuntime& pr, std::size_t k, core::Index s, const 
   }
   if (q[2] == q[3]) {
     L.sp = project_triangle(xs, c[0], c[1], c[2]);
-    return;
-  }
-  const double* cc[4] = {c[0], c[1], c[2], c[3]};
-  if (guess == nullptr) {
-    L.sp = project_quad(xs, cc);
   } else {
-    // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
-    L.sp = project_quad(xs, cc, guess[1] + guess[2] - guess[0] - guess[3],
-                        guess[2] + guess[3] - guess[0] - guess[1]);
+    const double* cc[4] = {c[0], c[1], c[2], c[3]};
+    if (guess == nullptr) {
+      L.sp = project_quad(xs, cc);
+    } else {
+      // xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1 for the bilinear shape functions.
+      L.sp = project_quad(xs, cc, guess[1] + guess[2] - guess[0] - guess[3],
+                          guess[2] + guess[3] - guess[0] - guess[1]);
+    }
+  }
+  if (!along_normal) {
+    const double so = L.side * os;
+    L.sp.distance -= so;
+    L.rs[0] = -so * L.sp.normal[0], L.rs[1] = -so * L.sp.normal[1], L.rs[2] = -so * L.sp.normal[2];
   }
 }
 
@@ -411,19 +422,14 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
   const double offsets = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
   Located L;
   L.side = pr.side[k];
-  double n[3];
   if (L.side != 0 && was_located) {
-    // Last cycle's contact normal orients the slave's director (it turns slowly).
-    const double* fr = &pr.frame[9 * k];
-    n[0] = fr[0], n[1] = fr[1], n[2] = fr[2];
-    project_surface(pr, k, s, n, packed, guess, L);
+    project_surface(pr, k, s, packed, guess, &pr.frame[9 * k], L);
     // A free node whose mid-surface is beyond the master's on the other side (its gap on this
     // side below minus twice the offsets) changes side.
     if (!(free && L.side * L.sp.distance < -2.0 * offsets))
       return L;
     L.side = static_cast<signed char>(-L.side);
-    n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
-    project_surface(pr, k, s, n, packed, guess, L);
+    project_surface(pr, k, s, packed, guess, nullptr, L);
     return L;
   }
   // No segment last cycle: the side of the mid plane (through the centroid) the node is on.
@@ -440,8 +446,7 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
   }
   if (L.side == 0 || free)
     L.side = dm >= 0.0 ? 1 : -1;
-  n[0] = L.side * ns[0], n[1] = L.side * ns[1], n[2] = L.side * ns[2];
-  project_surface(pr, k, s, n, packed, guess, L);
+  project_surface(pr, k, s, packed, guess, nullptr, L);
   return L;
 }
 
@@ -593,23 +598,82 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
   pr.dt_vote = vote;
 }
 
-// Velocity of slave k's surface point relative to the surface point of segment s below it,
-// (v_s + w_s x r_s) - sum N_j (v_j + w_j x r_j), with r the offset vectors (the master's along
-// its directors, turned to the slave's side). Rotations count at nodes that have them.
+// The master's nodal normals at the current positions: the mean of the normals of the segments
+// around each node, each turned by its sign fixed at t = 0 (init_directors).
+void update_master_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t nseg = cp.segments.size() / 4;
+#pragma omp parallel for schedule(static)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto su = static_cast<std::size_t>(ls);
+    segment_normal(&cp.segments[4 * su], packed, &pr.seg_normal[3 * su]);
+  }
+  const std::size_t nm = pr.master_nodes.size();
+#pragma omp parallel for schedule(static)
+  for (long li = 0; li < static_cast<long>(nm); ++li) {
+    const auto i = static_cast<std::size_t>(li);
+    double n0 = 0.0, n1 = 0.0, n2 = 0.0;
+    for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
+      const double* ns = &pr.seg_normal[3 * static_cast<std::size_t>(pr.node_seg[e])];
+      const double sg = pr.node_seg_sign[e];
+      n0 += sg * ns[0], n1 += sg * ns[1], n2 += sg * ns[2];
+    }
+    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
+    const double inv = len > 0.0 ? 1.0 / len : 0.0;
+    double* out = &pr.master_normal[3 * i];
+    out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
+  }
+}
+
+// The slave nodes' normals at the current positions, from their faces (init_directors' signs).
+void update_slave_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t nf = cp.slave_faces.size() / 4;
+#pragma omp parallel for schedule(static)
+  for (long lf = 0; lf < static_cast<long>(nf); ++lf) {
+    const auto f = static_cast<std::size_t>(lf);
+    segment_normal(&cp.slave_faces[4 * f], packed, &pr.slave_face_normal[3 * f]);
+  }
+  const std::size_t ns = cp.slave_count();
+#pragma omp parallel for schedule(static)
+  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+    const auto k = static_cast<std::size_t>(lk);
+    double n0 = 0.0, n1 = 0.0, n2 = 0.0;
+    for (std::size_t e = cp.slave_face_start[k]; e < cp.slave_face_start[k + 1]; ++e) {
+      const double* nf3 =
+          &pr.slave_face_normal[3 * static_cast<std::size_t>(cp.slave_face_index[e])];
+      const double sg = pr.slave_face_sign[e];
+      n0 += sg * nf3[0], n1 += sg * nf3[1], n2 += sg * nf3[2];
+    }
+    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
+    const double inv = len > 0.0 ? 1.0 / len : 0.0;
+    double* out = &pr.slave_normal[3 * k];
+    out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
+  }
+}
+
+// Velocity of slave k's surface point relative to the surface point of segment s below it:
+// v_s - sum N_j v_j, plus the tangential part (normal to `n`, the contact normal) of the
+// rotations' share w_s x r_s - sum N_j w_j x r_j, with r the offset vectors (the master's along
+// its nodal normals, turned to the slave's side). The rotations move the surface points along
+// the surface (the layers' faces slide past each other as they bend, which adhesion and
+// friction resist); the gap is geometry. Forces then put F on the nodes and the couples of the
+// tangential part of F on their rotations (apply()), and F . du is exactly their power.
 inline void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index s,
-                              const double* shape, const double* rs, int side, const double* packed,
-                              const Rotations& rot, double du[3]) {
+                              const double* shape, const double* rs, int side, const double* n,
+                              const double* packed, const Rotations& rot, double du[3]) {
   const core::ContactPass& cp = *pr.pass;
   const auto sn = static_cast<std::size_t>(cp.slave_nodes[k]);
   const double* p = at(packed, cp.slave_nodes[k]);
   // Summed in locals (not through du, which the compiler must assume may alias the inputs).
   double u0 = p[3], u1 = p[4], u2 = p[5];
+  double r0 = 0.0, r1 = 0.0, r2 = 0.0;  // the rotations' share
   const bool spin = rot.inertia != nullptr;
   if (spin && rot.inertia[sn] > 0.0) {
     const double w0 = rot.wx[sn], w1 = rot.wy[sn], w2 = rot.wz[sn];
-    u0 += w1 * rs[2] - w2 * rs[1];
-    u1 += w2 * rs[0] - w0 * rs[2];
-    u2 += w0 * rs[1] - w1 * rs[0];
+    r0 += w1 * rs[2] - w2 * rs[1];
+    r1 += w2 * rs[0] - w0 * rs[2];
+    r2 += w0 * rs[1] - w1 * rs[0];
   }
   const auto su = static_cast<std::size_t>(s);
   const core::Index* q = &cp.segments[4 * su];
@@ -619,21 +683,21 @@ inline void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index 
     if (nj == 0.0)
       continue;
     const double* v = at(packed, q[j]);
-    double v0 = v[3], v1 = v[4], v2 = v[5];
+    u0 -= nj * v[3];
+    u1 -= nj * v[4];
+    u2 -= nj * v[5];
     const auto m = static_cast<std::size_t>(q[j]);
     if (offset_spin && rot.inertia[m] > 0.0) {
       double r[3];
       corner_offset(pr, su, j, side, r);
       const double w0 = rot.wx[m], w1 = rot.wy[m], w2 = rot.wz[m];
-      v0 += w1 * r[2] - w2 * r[1];
-      v1 += w2 * r[0] - w0 * r[2];
-      v2 += w0 * r[1] - w1 * r[0];
+      r0 -= nj * (w1 * r[2] - w2 * r[1]);
+      r1 -= nj * (w2 * r[0] - w0 * r[2]);
+      r2 -= nj * (w0 * r[1] - w1 * r[0]);
     }
-    u0 -= nj * v0;
-    u1 -= nj * v1;
-    u2 -= nj * v2;
   }
-  du[0] = u0, du[1] = u1, du[2] = u2;
+  const double rn = r0 * n[0] + r1 * n[1] + r2 * n[2];
+  du[0] = u0 + r0 - rn * n[0], du[1] = u1 + r1 - rn * n[1], du[2] = u2 + r2 - rn * n[2];
 }
 
 // Geometry and law inputs of every slave node of a pass at the current positions; the first
@@ -643,22 +707,10 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   const core::ContactPass& cp = *pr.pass;
   const std::size_t ns = cp.slave_count();
   const law::BatchHistory& h = pr.hist;
-  // The directors turn with their nodes over the step just taken.
-  if (rot.wx != nullptr && dt > 0.0) {
-    const std::size_t nm = pr.master_nodes.size();
-#pragma omp parallel for schedule(static)
-    for (long li = 0; li < static_cast<long>(nm); ++li) {
-      const auto i = static_cast<std::size_t>(li);
-      const auto m = static_cast<std::size_t>(pr.master_nodes[i]);
-      turn_director(rot.wx[m] * dt, rot.wy[m] * dt, rot.wz[m] * dt, &pr.master_normal[3 * i]);
-    }
-#pragma omp parallel for schedule(static)
-    for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
-      const auto k = static_cast<std::size_t>(lk);
-      const auto m = static_cast<std::size_t>(cp.slave_nodes[k]);
-      turn_director(rot.wx[m] * dt, rot.wy[m] * dt, rot.wz[m] * dt, &pr.slave_normal[3 * k]);
-    }
-  }
+  if (pr.master_offsets && dt > 0.0)
+    update_master_normals(pr, packed);
+  if (!cp.slave_face_start.empty() && dt > 0.0)
+    update_slave_normals(pr, packed);
 #pragma omp parallel for schedule(static)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
@@ -670,7 +722,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       const double* f = &pr.prev_force[3 * k];
       double du[3];
       relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
-                        pr.side[k], packed, rot, du);
+                        pr.side[k], &pr.frame[9 * k], packed, rot, du);
       w -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work_part[k] = w;
@@ -684,6 +736,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     double* rs = &pr.rs[3 * k];
     if (s < 0) {
       pr.gap[k] = pr.far_gap;
+      pr.arrival_depth[k] = 0.0;
       pr.slip_x[k] = pr.slip_y[k] = 0.0;
       pr.m_eff[k] = 0.0;
       rs[0] = rs[1] = rs[2] = 0.0;
@@ -694,7 +747,23 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       pr.shape[4 * k + j] = L.sp.shape[j];
     pr.side[k] = L.side;
     rs[0] = L.rs[0], rs[1] = L.rs[1], rs[2] = L.rs[2];
-    pr.gap[k] = L.side * L.sp.distance;
+    // A node that comes onto the master from beyond its edge (a layer's edge sliding back over
+    // the layer below, a sheet coming round a tool's edge) may arrive inside the band of the
+    // offsets: a penetration it never made. Pushing it out would give the model energy that
+    // never entered it. Beyond a shallow first part (1 % of the band, an interference of
+    // meshes the penalty should remove, as before), the depth it arrived at is tolerated, and
+    // the tolerance shrinks to the node's depth whenever it comes out (there is no force then,
+    // so nothing is stored): the penalty acts on penetration beyond the arrival depth only, and
+    // the usual rule resumes once the node is clear. Penetrations at t = 0 are pushed out, as
+    // LS-DYNA does with IGNORE = 0.
+    const double g = L.side * L.sp.distance;
+    double& tol = pr.arrival_depth[k];
+    const double push = 0.01 * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
+    if (!was_located && pr.measured && g < -push)
+      tol = g + push;
+    else if (tol < 0.0 && g > tol)
+      tol = g < 0.0 ? g : 0.0;
+    pr.gap[k] = g - tol;
     // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
     if (!was_located)
       h.gap[k] = pr.gap[k];
@@ -724,7 +793,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // Relative displacement of the step: the slave's surface point minus the segment's
     // surface point (same shape functions as the force distribution).
     double du[3];
-    relative_velocity(pr, k, s, L.sp.shape, rs, L.side, packed, rot, du);
+    relative_velocity(pr, k, s, L.sp.shape, rs, L.side, fr, packed, rot, du);
     double mm = 0.0;
     if (pr.need_mass) {
       for (int j = 0; j < 4; ++j) {
@@ -743,7 +812,8 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   }
 }
 
-// The directors at t = 0: the mean normal of the faces around each node.
+// The master's nodal normals at t = 0 (the mean normal of the faces around each node) and the
+// signs that turn each segment's normal to agree with them, kept for the run.
 void init_directors(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
@@ -755,13 +825,21 @@ void init_directors(PassRuntime& pr, const double* packed) {
         },
         packed, &pr.master_normal[3 * i]);
   }
-  // Each corner's director against its segment's normal: the sign that turns it to the side
-  // of the segment a slave node is on. Fixed: directors and segments turn together.
+  // Each corner's nodal normal against its segment's normal: the sign that turns it to the side
+  // of the segment a slave node is on. Fixed: nodal normals and segments turn together.
   for (std::size_t c = 0; c < pr.corner_sign.size(); ++c) {
     double ns[3];
     segment_normal(&cp.segments[c - c % 4], packed, ns);
     const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[c])];
     pr.corner_sign[c] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
+  }
+  for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
+    const double* d = &pr.master_normal[3 * i];
+    for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
+      double ns[3];
+      segment_normal(&cp.segments[4 * static_cast<std::size_t>(pr.node_seg[e])], packed, ns);
+      pr.node_seg_sign[e] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
+    }
   }
   if (cp.slave_face_start.empty())
     return;
@@ -773,6 +851,13 @@ void init_directors(PassRuntime& pr, const double* packed) {
           return &cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[b + f])];
         },
         packed, &pr.slave_normal[3 * k]);
+    const double* d = &pr.slave_normal[3 * k];
+    for (std::size_t e = b; e < cp.slave_face_start[k + 1]; ++e) {
+      double nf[3];
+      segment_normal(&cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[e])], packed,
+                     nf);
+      pr.slave_face_sign[e] = d[0] * nf[0] + d[1] * nf[1] + d[2] * nf[2] < 0.0 ? -1 : 1;
+    }
   }
 }
 
@@ -849,6 +934,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
 
     measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
+    pr.measured = true;
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.gap.data();
@@ -901,7 +987,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
         continue;
       double du[3];
-      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], pr.side[k], packed, rot_, du);
+      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], pr.side[k], fr, packed, rot_,
+                        du);
       pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
     }
     pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
@@ -924,14 +1011,18 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       fx[sn] -= f[0];
       fy[sn] -= f[1];
       fz[sn] -= f[2];
-      // The force acts on the surface points: moments r x f on nodes with rotations (the
-      // engine's moment arrays are internal moments, like its force arrays).
+      // The force acts on the surface points: on nodes with rotations, the couples r x f of its
+      // tangential part (the part relative_velocity() lets the rotations move). The engine's
+      // moment arrays are internal moments, like its force arrays.
       const bool spin = rot_.inertia != nullptr;
+      const double* fn = &pr.frame[9 * k];
+      const double f_n = f[0] * fn[0] + f[1] * fn[1] + f[2] * fn[2];
+      const double ft[3] = {f[0] - f_n * fn[0], f[1] - f_n * fn[1], f[2] - f_n * fn[2]};
       if (spin && rot_.inertia[sn] > 0.0) {
         const double* rs = &pr.rs[3 * k];
-        rot_.mx[sn] -= rs[1] * f[2] - rs[2] * f[1];
-        rot_.my[sn] -= rs[2] * f[0] - rs[0] * f[2];
-        rot_.mz[sn] -= rs[0] * f[1] - rs[1] * f[0];
+        rot_.mx[sn] -= rs[1] * ft[2] - rs[2] * ft[1];
+        rot_.my[sn] -= rs[2] * ft[0] - rs[0] * ft[2];
+        rot_.mz[sn] -= rs[0] * ft[1] - rs[1] * ft[0];
       }
       const auto su = static_cast<std::size_t>(s);
       const core::Index* q = &cp.segments[4 * su];
@@ -946,9 +1037,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         if (spin && om > 0.0 && rot_.inertia[m] > 0.0) {
           double rm_[3];
           corner_offset(pr, su, j, pr.side[k], rm_);
-          rot_.mx[m] += nj * (rm_[1] * f[2] - rm_[2] * f[1]);
-          rot_.my[m] += nj * (rm_[2] * f[0] - rm_[0] * f[2]);
-          rot_.mz[m] += nj * (rm_[0] * f[1] - rm_[1] * f[0]);
+          rot_.mx[m] += nj * (rm_[1] * ft[2] - rm_[2] * ft[1]);
+          rot_.my[m] += nj * (rm_[2] * ft[0] - rm_[0] * ft[2]);
+          rot_.mz[m] += nj * (rm_[0] * ft[1] - rm_[1] * ft[0]);
         }
         for (int c = 0; c < 3; ++c)
           rm[static_cast<std::size_t>(c)] -= sign * nj * f[c];
