@@ -423,6 +423,15 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
   Located L;
   L.side = pr.side[k];
   if (L.side != 0 && was_located) {
+    // The side is relative to a segment's normal, and a surface's segments need not be
+    // oriented alike (a tool mesh from several patches): on another segment than last cycle's,
+    // the side is the one last cycle's contact normal is on.
+    if (s != pr.seg[k]) {
+      double ns[3];
+      segment_normal(q, packed, ns);
+      const double* fr = &pr.frame[9 * k];
+      L.side = fr[0] * ns[0] + fr[1] * ns[1] + fr[2] * ns[2] < 0.0 ? -1 : 1;
+    }
     project_surface(pr, k, s, packed, guess, &pr.frame[9 * k], L);
     // A free node whose mid-surface is beyond the master's on the other side (its gap on this
     // side below minus twice the offsets) changes side.

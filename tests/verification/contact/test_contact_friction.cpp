@@ -27,6 +27,7 @@ struct TwoPlates {
   double load = 16.0;  // total normal load on the slave plate [N]
   double vx = 10.0;    // drag speed [mm/s]
   bool flip_master = false, flip_slave = false;
+  bool split_master = false;  // the master of two parts, x < 4 and x > 4, the second flipped
   int sstyp = 3, mstyp = 3, ssid = 2, msid = 1;
   std::string extra;  // more keywords
 };
@@ -42,7 +43,17 @@ std::string two_plates(const TwoPlates& c) {
   d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
   d.kw("*MAT_ELASTIC").card(1, kRho, kE, kNu);
   const double m = 8.0, s0 = 0.5 * (m - c.slave_size);
-  const auto master = d.plate(1, 1, 1, 0, m, 0, m, c.master_n, c.master_n, 0.0, c.flip_master);
+  std::vector<int> master;
+  if (c.split_master) {
+    master = d.plate(1, 1, 1, 0, 0.5 * m, 0, m, c.master_n / 2, c.master_n, 0.0, false);
+    const auto right =
+        d.plate(3, 501, 501, 0.5 * m, m, 0, m, c.master_n / 2, c.master_n, 0.0, true);
+    master.insert(master.end(), right.begin(), right.end());
+    d.kw("*PART").kw("master, flipped half").card(3, 1, 1);
+    d.kw("*SET_PART_LIST").card(9).card(1, 3);
+  } else {
+    master = d.plate(1, 1, 1, 0, m, 0, m, c.master_n, c.master_n, 0.0, c.flip_master);
+  }
   const auto slave = d.plate(2, 1001, 1001, s0, s0 + c.slave_size, s0, s0 + c.slave_size, c.slave_n,
                              c.slave_n, 1.0, c.flip_slave);
   d.kw("*DATABASE_HISTORY_NODE").card(slave[slave.size() / 2]);
@@ -106,6 +117,28 @@ TEST(ContactFriction, LoadIsCarriedAndFrictionIsMuTimesNormalForce) {
   EXPECT_NEAR(r.sink.energies.back().contact, last.work, 1e-12 * std::abs(last.work));
   EXPECT_NEAR(last.stored + last.friction + last.damping, last.work, 0.01 * last.work);
   EXPECT_GT(last.friction, 0.5 * last.work);
+}
+
+// A master surface whose segments are not oriented alike (two patches, one flipped, as tool
+// meshes put together from several pieces often are): a slave node keeps its physical side as
+// it slides from one patch onto the other (its side against the new segment is the one its
+// contact normal is on), so the contact carries the load and friction as on one patch, and the
+// books close. The slave plate straddles the seam and slides 3 mm across it.
+TEST(ContactFriction, SlavesCrossBetweenOppositelyOrientedSegments) {
+  TwoPlates c;
+  c.split_master = true;
+  c.msid = 9;
+  c.mstyp = 2;
+  c.vx = 1000.0;
+  test::DeckRun r;
+  run_deck(two_plates(c), r);
+  const Steady s = steady(r, c.end);
+  EXPECT_NEAR(s.fz, c.load, 0.005 * c.load);
+  EXPECT_NEAR(-s.fx / s.fz, 0.3, 0.003);
+  const auto& last = r.sink.contact.back().second.at(0);
+  EXPECT_NEAR(last.stored + last.friction + last.damping, last.work, 0.01 * last.work);
+  for (const auto& e : r.sink.energies)
+    EXPECT_GE(e.contact, -1e-9 * std::abs(last.work)) << "t = " << e.time;
 }
 
 TEST(ContactFriction, StaticToDynamicDecayFollowsTheExponentialLaw) {
