@@ -1,0 +1,380 @@
+#!/usr/bin/env python3
+"""Square-cup deep drawing of a single aluminium sheet or of a three-layer bonded sandwich.
+
+Standard library only; runs with any Python 3.
+
+    python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
+                        [--dt2ms DT] [--name NAME]
+
+The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
+150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
+travel prescribed), a fixed rigid die with an opening and a shoulder radius, and a rigid blank
+holder pressed onto the flange by a force. Quarter model (x, y >= 0) with symmetry on the
+planes x = 0 and y = 0. Each layer of the blank is its own shell mesh:
+
+- `--layers 1`: one 0.81 mm aluminium sheet.
+- `--layers 3`: aluminium 0.25 mm / soft elastic core 1.00 mm / aluminium 0.25 mm, the core's
+  mesh coarser than the skins', both interfaces initially bonded by the cohesive law
+  (*USER_INTERFACE_FRICTION: C_N 100 MPa/mm, sigma_max 1 MPa, mu 0.2, VDC 10 %), the core the
+  master side of each.
+
+The outer layers touch the tools through *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (the
+tool meshes are the tools' surfaces). --n N: elements along the quarter blank's edge (the
+core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/s).
+--dt2ms DT: mass scaling to the time step DT (0: none).
+
+Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
+N, mJ (N mm).
+"""
+
+import json
+import math
+import os
+import sys
+
+# Tools (mm).
+PUNCH_HALF, PUNCH_CORNER, PUNCH_NOSE = 35.0, 10.0, 8.0
+DIE_HALF, DIE_CORNER, DIE_SHOULDER = 37.235, 12.235, 8.0  # opening 74.47 mm square
+TOOL_EXTENT = 85.0  # die and holder flats reach x, y = 85 mm (the blank's edge is at 75 mm)
+BLANK_HALF = 75.0
+HOLDER_FORCE = 19600.0  # N on the whole blank; the quarter model carries a quarter of it
+FRICTION = 0.162  # tools against the aluminium
+
+# Aluminium (the benchmark's hardening law, isotropic: sigma_y = K (EPS0 + eps_p)^N).
+AL = {"rho": 2.7e-9, "E": 71000.0, "nu": 0.33, "K": 576.79, "eps0": 0.01658, "n": 0.3593}
+CORE = {"rho": 1.2e-9, "nu": 0.35}  # a soft polymer core
+CORE_E = 1500.0
+TOOL = {"rho": 7.85e-9, "E": 210000.0, "nu": 0.3}
+
+# Cohesive interfaces (three-layer blank): omega = sigma_max^2 / C_N = 0.01 mJ/mm^2.
+CN, SMAX, MU, VDC = 100.0, 1.0, 0.2, 10.0
+ETA, ZETA = 1.0e-9, 120.0  # Lambda = eta v / (omega g_c) ~ 3e-2 at 3 m/s: nearly rate free
+HG_QM = 0.03  # stiffness hourglass control (IHQ 4) of the blank's layers (0.1 stiffens the draw by 2 %)
+TOOL_VDC = 20.0  # normal damping of the tool contacts, percent of critical
+# Constants that --set NAME=VALUE may change (studies of the model's sensitivity).
+TUNABLE = ("CN", "SMAX", "MU", "VDC", "ETA", "ZETA", "HG_QM", "TOOL_VDC", "FRICTION",
+           "HOLDER_FORCE", "CORE_E")
+
+
+def card(*fields, width=10):
+    out = []
+    for f in fields:
+        if isinstance(f, float):
+            s = f"{f:.6g}"
+            for digits in (5, 4, 3, 2):
+                if len(s) <= width:
+                    break
+                s = f"{f:.{digits}g}"
+            out.append(s.rjust(width))
+        else:
+            out.append(str(f).rjust(width))
+    return "".join(out) + "\n"
+
+
+def ids(values):
+    values = list(values)
+    return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
+
+
+def contour(half, corner, n):
+    """Quarter of a rounded square (half-width, corner radius) from (half, 0) to (0, half):
+    n + 1 points evenly spaced in arc length, with their outward normals."""
+    straight = half - corner
+    arc = 0.5 * math.pi * corner
+    total = 2 * straight + arc
+    pts = []
+    for k in range(n + 1):
+        s = total * k / n
+        if s <= straight:
+            p, nrm = (half, s), (1.0, 0.0)
+        elif s <= straight + arc:
+            a = (s - straight) / corner if corner > 0 else 0.0
+            nrm = (math.cos(a), math.sin(a))
+            p = (straight + corner * nrm[0], straight + corner * nrm[1])
+        else:
+            p, nrm = (max(0.0, straight - (s - straight - arc)), half), (0.0, 1.0)
+        pts.append((p, nrm))
+    return pts
+
+
+class Mesh:
+    """Shell nodes and quadrilaterals of one part, numbered from a first id."""
+
+    def __init__(self, part, first):
+        self.part, self.first = part, first
+        self.nodes, self.elems = [], []
+
+    def node(self, x, y, z):
+        self.nodes.append((self.first + len(self.nodes), x, y, z))
+        return self.nodes[-1][0]
+
+    def grid(self, rows):
+        """rows[i][j] node ids; a quad between each pair of rows and columns."""
+        for i in range(len(rows) - 1):
+            for j in range(len(rows[i]) - 1):
+                self.elems.append((rows[i][j], rows[i][j + 1], rows[i + 1][j + 1], rows[i + 1][j]))
+
+
+def sheet(part, first, z, n):
+    m = Mesh(part, first)
+    rows = [[m.node(BLANK_HALF * i / n, BLANK_HALF * j / n, z) for i in range(n + 1)]
+            for j in range(n + 1)]
+    m.grid(rows)
+    return m, rows
+
+
+def o_grid_flat(m, half, corner, ns, nr, z):
+    """The flat quarter inside a rounded-square contour: an inner square block of ns/2 x ns/2
+    elements and nr rings out to the contour. Returns the contour's node ids."""
+    half_inner = 0.5 * half
+    h = ns // 2
+    inner = [[m.node(half_inner * i / h, half_inner * j / h, z) for i in range(h + 1)]
+             for j in range(h + 1)]
+    m.grid(inner)
+    # Boundary of the inner block from (q, 0) up to (q, q) and across to (0, q), as the contour.
+    ring0 = [inner[j][h] for j in range(h + 1)] + [inner[h][i] for i in range(h - 1, -1, -1)]
+    base = [(half_inner, half_inner * j / h) for j in range(h + 1)]
+    base += [(half_inner * i / h, half_inner) for i in range(h - 1, -1, -1)]
+    outer = contour(half, corner, ns)
+    rings = [ring0]
+    for r in range(1, nr + 1):
+        f = r / nr
+        rings.append([m.node(b[0] + f * (p[0] - b[0]), b[1] + f * (p[1] - b[1]), z)
+                      for b, (p, _) in zip(base, outer)])
+    m.grid(rings)
+    return rings[-1]
+
+
+def punch(first, z0, ns, height):
+    """Punch face at z0 (touching the blank from above), its nose radius and wall above."""
+    m = Mesh(11, first)
+    inset = contour(PUNCH_HALF - PUNCH_NOSE, PUNCH_CORNER - PUNCH_NOSE, ns)
+    rings = [o_grid_flat(m, PUNCH_HALF - PUNCH_NOSE, PUNCH_CORNER - PUNCH_NOSE, ns, ns // 4, z0)]
+    nn = max(4, ns // 4)
+    for j in range(1, nn + 1):
+        phi = 0.5 * math.pi * j / nn
+        r, dz = PUNCH_NOSE * math.sin(phi), PUNCH_NOSE * (1 - math.cos(phi))
+        rings.append([m.node(p[0] + r * q[0], p[1] + r * q[1], z0 + dz) for p, q in inset])
+    nw = max(2, round(height / 5.0))
+    for j in range(1, nw + 1):
+        rings.append([m.node(p[0] + PUNCH_NOSE * q[0], p[1] + PUNCH_NOSE * q[1],
+                             z0 + PUNCH_NOSE + height * j / nw) for p, q in inset])
+    m.grid(rings)
+    return m
+
+
+def flat_frame(m, half, corner, ns, nr, z, reverse=False):
+    """The flat between a rounded-square contour and the square x, y = TOOL_EXTENT."""
+    inner = contour(half, corner, ns)
+    h = ns // 2
+    box = [(TOOL_EXTENT, TOOL_EXTENT * j / h) for j in range(h + 1)]
+    box += [(TOOL_EXTENT * i / h, TOOL_EXTENT) for i in range(h - 1, -1, -1)]
+    rings = []
+    for r in range(nr + 1):
+        f = r / nr
+        rings.append([m.node(p[0] + f * (b[0] - p[0]), p[1] + f * (b[1] - p[1]), z)
+                      for (p, _), b in zip(inner, box)])
+    m.grid(rings[::-1] if reverse else rings)
+    return rings[0]
+
+
+def die(first, z0, ns, depth):
+    """Die face at z0 (touching the blank from below), its shoulder and its wall below."""
+    m = Mesh(12, first)
+    out = contour(DIE_HALF + DIE_SHOULDER, DIE_CORNER + DIE_SHOULDER, ns)
+    edge = flat_frame(m, DIE_HALF + DIE_SHOULDER, DIE_CORNER + DIE_SHOULDER, ns, ns // 4, z0,
+                      reverse=True)
+    rings = [edge]
+    nn = max(4, ns // 4)
+    for j in range(1, nn + 1):
+        phi = 0.5 * math.pi * j / nn
+        r, dz = DIE_SHOULDER * math.sin(phi), DIE_SHOULDER * (1 - math.cos(phi))
+        rings.append([m.node(p[0] - r * q[0], p[1] - r * q[1], z0 - dz) for p, q in out])
+    wall = depth + 5.0
+    nw = max(2, round(wall / 5.0))
+    for j in range(1, nw + 1):
+        rings.append([m.node(p[0] - DIE_SHOULDER * q[0], p[1] - DIE_SHOULDER * q[1],
+                             z0 - DIE_SHOULDER - wall * j / nw) for p, q in out])
+    m.grid(rings)
+    return m
+
+
+def holder(first, z0, ns):
+    """Blank holder face at z0 over the flange: inside it stops 1 mm beyond the die's shoulder."""
+    m = Mesh(13, first)
+    flat_frame(m, DIE_HALF + DIE_SHOULDER + 1.0, DIE_CORNER + DIE_SHOULDER + 1.0, ns, ns // 4, z0)
+    return m
+
+
+def stroke_curve(end, depth, ramp):
+    """Punch displacement (down): the speed rises as a half cosine over `ramp`, then stays."""
+    v = depth / (end - 0.5 * ramp)
+    pts = []
+    for k in range(21):
+        t = ramp * k / 20
+        pts.append((t, v * (0.5 * t - 0.5 * ramp / math.pi * math.sin(math.pi * t / ramp))))
+    pts.append((end, depth))
+    return pts
+
+
+def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_time=None):
+    hold_start = 0.2e-3  # the holder force rises over this time before the punch moves
+    ramp = 1.0e-3
+    end = hold_start + depth / speed + 0.5 * ramp
+    if layers == 1:
+        spec = [(1, "aluminium sheet", 0.81, 0.0, n, "al")]
+    else:
+        spec = [(1, "lower skin (aluminium)", 0.25, -0.625, n, "al"),
+                (2, "core", 1.00, 0.0, core_n or max(2, round(n * 2 / 3)), "core"),
+                (3, "upper skin (aluminium)", 0.25, 0.625, n, "al")]
+    half = 0.5 * sum(s[2] for s in spec)
+    sheets = []
+    for part, title, t, z, ne, mat in spec:
+        m, rows = sheet(part, 100000 * part + 1, z, ne)
+        sheets.append((part, title, t, z, ne, mat, m, rows))
+    ns = 2 * max(8, round(n * 0.8))  # tool elements along a quarter contour
+    tools = [punch(1100001, half, ns, depth + 5.0), die(1200001, -half, ns, depth),
+             holder(1300001, half, ns)]
+    tool_titles = {11: "punch", 12: "die", 13: "blank holder"}
+
+    k = ["*KEYWORD\n", "*TITLE\n", f"plyform square cup ({layers} layer{'s' if layers > 1 else ''},"
+         f" {n} elements along the quarter's edge)\n"]
+    k += ["*CONTROL_TERMINATION\n", card(end_time or end)]
+    # PENOPT 3: every contact's penalty from its slave side. The default (the smaller of the
+    # two sides) would take the soft core's: about 31 MPa/mm, under which the pressure at the
+    # tools' radii (100 MPa and more) sinks the layers a few millimetres into each other.
+    k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3)]
+    k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9, 0, 0.0, -dt2ms if dt2ms > 0 else 0.0)]
+    k += ["*DATABASE_BINARY_D3PLOT\n", card(end / 15)]
+    out_dt = end / 400
+    for name in ("GLSTAT", "RCFORC", "NODOUT"):
+        k += [f"*DATABASE_{name}\n", card(out_dt)]
+    # History: the blank's edge midpoints (draw-in along x and y) and its corner (diagonal), in
+    # every layer, and the centre.
+    history = []
+    for part, title, t, z, ne, mat, m, rows in sheets:
+        history += [rows[0][ne], rows[ne][0], rows[ne][ne], rows[0][0]]
+    k += ["*DATABASE_HISTORY_NODE\n"] + ids(history)
+    k += ["*HOURGLASS\n", card(1, 4, HG_QM)]
+    for part, title, t, z, ne, mat, m, rows in sheets:
+        k += [f"*PART\n{title}\n", card(part, part, 1 if mat == "al" else 2, 0, 1)]
+        k += ["*SECTION_SHELL\n", card(part, 2, 0.8333, 5 if mat == "al" else 3), card(*([t] * 4))]
+    k += ["*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\naluminium (NUMISHEET'93 hardening)\n",
+          card(1, AL["rho"], AL["E"], AL["nu"], 0.0, 0.0, 0.0), card(0.0, 0.0, 1, 0),
+          card(*([0.0] * 8)), card(*([0.0] * 8))]
+    k += ["*DEFINE_CURVE_TITLE\naluminium yield stress against plastic strain\n", card(1)]
+    for i in range(41):
+        ep = 2.0 * (i / 40) ** 2
+        k.append(f"{ep:20.10g}{AL['K'] * (AL['eps0'] + ep) ** AL['n']:20.10g}\n")
+    k += ["*MAT_ELASTIC_TITLE\ncore\n", card(2, CORE["rho"], CORE_E, CORE["nu"])]
+    # Tools: rigid; the die held, the punch and holder free along z only.
+    for pid, con1 in ((11, 4), (12, 7), (13, 4)):
+        k += [f"*PART\n{tool_titles[pid]}\n", card(pid, 10, pid)]
+        k += [f"*MAT_RIGID_TITLE\n{tool_titles[pid]}\n",
+              card(pid, TOOL["rho"], TOOL["E"], TOOL["nu"]), card(1.0, con1, 7)]
+    k += ["*SECTION_SHELL\n", card(10, 2, 0.8333, 2), card(*([1.0] * 4))]
+    k += ["*NODE\n"]
+    for mesh in [s[6] for s in sheets] + tools:
+        for nid, x, y, z in mesh.nodes:
+            k.append(f"{nid:8d}{x:16.8f}{y:16.8f}{z:16.8f}\n")
+    k += ["*ELEMENT_SHELL\n"]
+    for mesh in [s[6] for s in sheets] + tools:
+        for i, (a, b, c, d) in enumerate(mesh.elems):
+            k.append(card(mesh.first + i, mesh.part, a, b, c, d, width=8))
+    # Symmetry planes: x = 0 (u_x, rotations about y and z) and y = 0 (u_y, about x and z).
+    on_x0 = [nid for s in sheets for nid, x, y, z in s[6].nodes if x == 0.0]
+    on_y0 = [nid for s in sheets for nid, x, y, z in s[6].nodes if y == 0.0]
+    k += ["*SET_NODE_LIST_TITLE\nsymmetry plane x = 0\n", card(1)] + ids(on_x0)
+    k += ["*SET_NODE_LIST_TITLE\nsymmetry plane y = 0\n", card(2)] + ids(on_y0)
+    k += ["*BOUNDARY_SPC_SET\n", card(1, 0, 1, 0, 0, 0, 1, 1)]
+    k += ["*BOUNDARY_SPC_SET\n", card(2, 0, 0, 1, 0, 1, 0, 1)]
+    k += ["*DEFINE_CURVE_TITLE\npunch travel (down)\n", card(2)]
+    k += [f"{t + hold_start:20.10g}{-d:20.10g}\n" for t, d in stroke_curve(end - hold_start, depth, ramp)]
+    k += ["*BOUNDARY_PRESCRIBED_MOTION_RIGID\n", card(11, 3, 2, 2, 1.0)]
+    k += ["*DEFINE_CURVE_TITLE\nblank-holder force (quarter)\n", card(3)]
+    k += [f"{0.0:20.10g}{0.0:20.10g}\n", f"{hold_start:20.10g}{1.0:20.10g}\n",
+          f"{end * 2:20.10g}{1.0:20.10g}\n"]
+    k += ["*LOAD_RIGID_BODY\n", card(13, 3, 3, -0.25 * HOLDER_FORCE)]
+    top, bottom = sheets[-1][0], sheets[0][0]
+    contacts = [(1, "punch on the upper surface", top, 11), (2, "holder on the upper surface", top, 13),
+                (3, "die under the lower surface", bottom, 12)]
+    for cid, title, slave, master in contacts:
+        k += ["*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
+        k += [card(slave, master, 3, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC), card(1.0, 1.0)]
+    if layers == 3:
+        for cid, title, slave in ((4, "upper skin on the core", 3), (5, "lower skin on the core", 1)):
+            k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
+            k += [card(slave, 2, 3, 3), card(0.0), card(1.0, 1.0)]
+            #     MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC MU_LO
+            #     MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
+            uc = [1, CN, SMAX, SMAX, 0.0, 0.0, ETA, ZETA, ZETA, 1.0, 1.0e-3, 0, MU, MU, 0.0, 0.0,
+                  0.0, VDC, 1.0e-3, CN]
+            k += ["*USER_INTERFACE_FRICTION\n", card(cid, len(uc), 0)]
+            k += ids(float(v) if isinstance(v, float) else v for v in uc)
+        # The cohesive contacts are one way: skin nodes against core segments. Nothing in them
+        # keeps the core's nodes from passing through a skin between its nodes once the layers
+        # have slid past each other (the core, soft and squeezed in the flange, folds through),
+        # so a second, plain contact puts the core's nodes against each skin, frictionless (the
+        # cohesive contact carries the friction). Its penalty is the slave's (PENOPT 3): the
+        # core's 1/60 of a skin's, scaled by SFS to about the skin's.
+        sfs = 1969.0 / (0.1 * CORE_E / (3 * (1 - 2 * CORE["nu"])) / (BLANK_HALF / n * 2 ** 0.5))
+        for cid, title, master in ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1)):
+            k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
+            k += [card(2, master, 3, 3), card(0.0, 0.0, 0.0, 0.0, 0.0), card(round(sfs, 1), 1.0)]
+    k += ["*END\n"]
+    params = {
+        "layers": layers, "n": n, "depth": depth, "speed": speed, "end": end,
+        "hold_start": hold_start, "ramp": ramp, "holder_force_quarter": 0.25 * HOLDER_FORCE,
+        "blank_half": BLANK_HALF, "dt2ms": dt2ms,
+        "edge_x": [s[7][0][s[4]] for s in sheets], "edge_y": [s[7][s[4]][0] for s in sheets],
+        "corner": [s[7][s[4]][s[4]] for s in sheets],
+        "parts": {s[0]: s[1] for s in sheets}, "tool_contacts": [1, 2, 3],
+        "interfaces": [4, 5] if layers == 3 else [],
+    }
+    return "".join(k), params
+
+
+def main(argv):
+    outdir, name, layers, n, depth, speed, dt2ms, core_n = ".", None, 3, 30, 30.0, 3000.0, 0.0, None
+    end_time = None
+    args = list(argv)
+    while args:
+        a = args.pop(0)
+        if a == "--layers":
+            layers = int(args.pop(0))
+        elif a == "--n":
+            n = int(args.pop(0))
+        elif a == "--depth":
+            depth = float(args.pop(0))
+        elif a == "--speed":
+            speed = float(args.pop(0))
+        elif a == "--core-n":
+            core_n = int(args.pop(0))
+        elif a == "--dt2ms":
+            dt2ms = float(args.pop(0))
+        elif a == "--end":
+            end_time = float(args.pop(0))
+        elif a == "--set":
+            key, value = args.pop(0).split("=")
+            if key not in TUNABLE:
+                sys.exit(f"generate.py: --set takes one of {', '.join(TUNABLE)}")
+            globals()[key] = float(value)
+        elif a == "--name":
+            name = args.pop(0)
+        elif a.startswith("-"):
+            sys.exit(f"generate.py: unknown option {a}")
+        else:
+            outdir = a
+    if layers not in (1, 3):
+        sys.exit("generate.py: --layers is 1 or 3")
+    name = name or f"square_cup_{layers}"
+    os.makedirs(outdir, exist_ok=True)
+    text, params = deck(layers, n, depth, speed, dt2ms, core_n, end_time)
+    with open(os.path.join(outdir, name + ".k"), "w") as f:
+        f.write(text)
+    with open(os.path.join(outdir, name + ".json"), "w") as f:
+        json.dump(params, f, indent=1)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
