@@ -194,6 +194,59 @@ TEST(CheckCommand, ShowsTheContactAsBuilt) {
       << r.out;
 }
 
+// A soft layer against a stiff one under PENOPT 1: the smaller penalty is the soft side's, and
+// check says so, naming the contact, the field and the remedies. Both plates 1 x 1 mm, 0.1 mm
+// thick (offsets 0.05), 0.1 K A / d per area: lower (master) E 100, upper (slave) E 1e5, so the
+// master's is 1/1000 of the slave's. With PENOPT 3 the slave's is used and nothing is said.
+TEST(CheckCommand, WarnsWhenPenopt1TakesAFarSofterSide) {
+  constexpr const char* kSoftMaster = R"(*KEYWORD
+*CONTROL_TERMINATION
+1e-3
+*NODE
+1,0,0,0
+2,1,0,0
+3,1,1,0
+4,0,1,0
+5,0,0,0.1
+6,1,0,0.1
+7,1,1,0.1
+8,0,1,0.1
+*ELEMENT_SHELL
+1,1,1,2,3,4
+2,2,5,6,7,8
+*PART
+lower
+1,1,1
+*PART
+upper
+2,1,2
+*SECTION_SHELL
+1
+0.1
+*MAT_ELASTIC
+1,1e-9,100.0,0.3
+*MAT_ELASTIC
+2,1e-9,1.0e5,0.3
+*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID
+4
+2,1,3,3
+*END
+)";
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("soft.k", kSoftMaster));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("field SFM: contact 4: PENOPT 1 takes the smaller penalty, the master "
+                       "side's"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("1/1000 of the slave side's"), std::string::npos) << r.err;
+  std::string stiff = kSoftMaster;
+  stiff.replace(stiff.find("*CONTACT"), 0, "*CONTROL_CONTACT\n0.1,0,0,0,3\n");
+  const CheckRun r3 = check(dir.write("penopt3.k", stiff));
+  EXPECT_EQ(r3.status, 0) << r3.err;
+  EXPECT_EQ(r3.err.find("PENOPT 1 takes"), std::string::npos) << r3.err;
+}
+
 TEST(CheckCommand, UserInterfaceFrictionWithoutItsContactIsAnError) {
   std::string text = kContacts;
   text.replace(text.find("3,layers"), 8, "4,layers");

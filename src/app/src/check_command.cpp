@@ -105,6 +105,8 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
   const setup::BuildResult built = setup::build(desc);
   for (const auto& d : built.errors)
     fmt::print(err, "error: {}\n", d.to_string());
+  for (const auto& w : built.warnings)
+    fmt::print(err, "warning: {}\n", w.to_string());
   if (!built.model)
     return false;
   const core::Model& m = *built.model;
