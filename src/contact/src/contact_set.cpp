@@ -608,7 +608,7 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
 }
 
 // The master's nodal normals at the current positions: the mean of the normals of the segments
-// around each node, each turned by its sign fixed at t = 0 (init_directors).
+// around each node, each turned by its sign fixed at t = 0 (init_nodal_normals).
 void update_master_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nseg = cp.segments.size() / 4;
@@ -634,7 +634,7 @@ void update_master_normals(PassRuntime& pr, const double* packed) {
   }
 }
 
-// The slave nodes' normals at the current positions, from their faces (init_directors' signs).
+// The slave nodes' normals at the current positions, from their faces (init_nodal_normals' signs).
 void update_slave_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nf = cp.slave_faces.size() / 4;
@@ -823,7 +823,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
 
 // The master's nodal normals at t = 0 (the mean normal of the faces around each node) and the
 // signs that turn each segment's normal to agree with them, kept for the run.
-void init_directors(PassRuntime& pr, const double* packed) {
+void init_nodal_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
     const std::size_t b = pr.node_seg_start[i];
@@ -875,7 +875,7 @@ void init_directors(PassRuntime& pr, const double* packed) {
 void ContactSet::start(const double* packed) {
   for (auto& pp : passes_) {
     PassRuntime& pr = *pp;
-    init_directors(pr, packed);
+    init_nodal_normals(pr, packed);
     search(pr, packed, mass_, rigid_, rot_, tssfac_);
     ++searches_;
     const std::size_t ns = pr.pass->slave_count();

@@ -80,10 +80,11 @@ class ContactSet {
   void follow_shell_thickness(std::vector<const double*> thickness);
 
   /// The nodes' rotations (pointers into the engine's arrays, read and written every cycle).
-  /// An offset contact surface point turns with its node: its velocity is v + w x r, and a
-  /// contact force F on it puts the moment r x F on the node (the layers of a bonded stack then
-  /// act as one section in bending and shear). Without them (null) the surface points follow
-  /// the nodes' translation only. The step vote counts the rotary inertia.
+  /// An offset contact surface point slides with its node's rotation: the tangential part of
+  /// w x r enters the slip, and the tangential part F_t of a contact force on it puts the
+  /// moment r x F_t on the node (the layers of a bonded stack then act as one section in
+  /// bending and shear). Without them (null) the surface points follow the nodes' translation
+  /// only. The step vote counts the rotary inertia.
   void follow_rotations(const Rotations& rotations);
 
   /// t = 0: the first search, then initially bonded nodes (BOND_TOL) bond. `packed`: x y z vx
