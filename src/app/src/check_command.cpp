@@ -18,6 +18,7 @@
 #include "plyform/law/user_constants.hpp"
 #include "plyform/setup/build.hpp"
 #include "plyform/setup/cohesive_law.hpp"
+#include "plyform/setup/contact_penalty.hpp"
 #include "plyform/setup/validate.hpp"
 
 namespace plyform::app {
@@ -181,27 +182,11 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
         const std::string a = fmt::format("{:.4g}", *lo), b = fmt::format("{:.4g}", *hi);
         return a == b ? a : a + "-" + b;
       };
-      std::vector<double> k_area(cp.slave_count());
-      for (std::size_t i = 0; i < k_area.size(); ++i)
-        k_area[i] = cp.slave_stiffness[i] / cp.slave_area[i];
-      // The master's per area (its segments' stiffness over their area at t = 0), and the one
-      // the pass uses by PENOPT: a soft layer (a polymer core) makes a soft min(slave, master),
-      // under which forming pressures sink layers into each other.
-      std::vector<double> km_area;
-      for (std::size_t s = 0; s < cp.segment_count(); ++s) {
-        const auto node = [&](int j) {
-          const auto n = static_cast<std::size_t>(cp.segments[4 * s + static_cast<std::size_t>(j)]);
-          return std::array<double, 3>{m.x0[n], m.y0[n], m.z0[n]};
-        };
-        const auto a = node(0), b = node(1), cc = node(2), d = node(3);
-        const double d1[3] = {cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]};
-        const double d2[3] = {d[0] - b[0], d[1] - b[1], d[2] - b[2]};
-        const double cx = d1[1] * d2[2] - d1[2] * d2[1], cy = d1[2] * d2[0] - d1[0] * d2[2],
-                     cz = d1[0] * d2[1] - d1[1] * d2[0];
-        const double area = 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
-        if (area > 0.0 && cp.segment_stiffness[s] > 0.0)
-          km_area.push_back(cp.segment_stiffness[s] / area);
-      }
+      // The master's per area too, and the one the pass uses by PENOPT: a soft layer (a
+      // polymer core) makes a soft min(slave, master), under which forming pressures sink
+      // layers into each other.
+      const std::vector<double> k_area = setup::slave_penalty_per_area(cp);
+      const std::vector<double> km_area = setup::master_penalty_per_area(m, cp);
       std::string used = c.penopt == 3 ? "slave" : c.penopt == 2 ? "master" : "the smaller";
       fmt::print(out,
                  "  contact {} pass {}: {} slave nodes against {} segments; offsets slave {}, "

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "plyform/setup/cohesive_law.hpp"
+#include "plyform/setup/contact_penalty.hpp"
 
 namespace plyform::setup {
 namespace {
@@ -79,34 +80,6 @@ struct Geometry {
 };
 
 // A face of 4 node indices with repeats removed: a quad, a triangle (q[2] == q[3]) or nothing.
-// Per-area penalty of a pass's sides (their stiffness over their area at t = 0).
-struct SidePenalty {
-  double slave = 0.0, master = 0.0;
-};
-SidePenalty side_penalty(const core::Model& m, const core::ContactPass& p) {
-  SidePenalty out;
-  double ks = 0.0, as = 0.0, km = 0.0, am = 0.0;
-  for (std::size_t i = 0; i < p.slave_count(); ++i) {
-    ks += p.slave_stiffness[i];
-    as += p.slave_area[i];
-  }
-  for (std::size_t s = 0; s < p.segment_count(); ++s) {
-    const auto at = [&](std::size_t j) {
-      const auto n = static_cast<std::size_t>(p.segments[4 * s + j]);
-      return Vec{m.x0[n], m.y0[n], m.z0[n]};
-    };
-    const Vec a = at(0), b = at(1), c = at(2), d = at(3);
-    const Vec d1{c[0] - a[0], c[1] - a[1], c[2] - a[2]}, d2{d[0] - b[0], d[1] - b[1], d[2] - b[2]};
-    const Vec x{d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-                d1[0] * d2[1] - d1[1] * d2[0]};
-    km += p.segment_stiffness[s];
-    am += 0.5 * norm(x);
-  }
-  out.slave = as > 0.0 ? ks / as : 0.0;
-  out.master = am > 0.0 ? km / am : 0.0;
-  return out;
-}
-
 bool normalise_face(std::array<Index, 4>& q) {
   std::array<Index, 4> u{};
   int n = 0;
