@@ -4,20 +4,41 @@
     check.py RUNDIR [--plot PNG]
 
 RUNDIR holds dcb.json, bndout.csv, nodout.csv, glstat.csv, interface_energy.csv and
-cohesive.csv of `plyform run`. Prints each check with its figures; exits 1 when one fails.
-Standard library only (the plot needs matplotlib).
+cohesive.csv of `plyform run`, and check.txt, what `plyform check` printed for the deck (the
+contact penalty per area as built: the interface's stiffness in compression, which the beam
+reference of the peak needs). Prints each check with its figures; exits 1 when one fails.
+Needs numpy and scipy (the beam reference, cohesive_beam.py); the plot needs matplotlib.
 """
 
 import csv
 import json
 import math
 import os
+import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cohesive_beam  # noqa: E402
 
 
 def rows(path):
     with open(path) as f:
         return list(csv.DictReader(f))
+
+
+def contact_penalty(run):
+    """The penalty per area the interface uses in compression, from `plyform check`."""
+    path = os.path.join(run, "check.txt")
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError:
+        sys.exit(f"check.py: {path} missing: write it with `plyform check DECK > {path}`")
+    m = re.search(r"penalty per area slave ([0-9.e+-]+), master ([0-9.e+-]+), PENOPT (\d)", text)
+    if not m:
+        sys.exit(f"check.py: {path}: no 'penalty per area' line for the contact")
+    slave, master, penopt = float(m.group(1)), float(m.group(2)), int(m.group(3))
+    return {1: min(slave, master), 2: master, 3: slave}.get(penopt, min(slave, master))
 
 
 def closed_forms(p):
@@ -44,6 +65,21 @@ def main(argv):
     with open(os.path.join(run, "dcb.json")) as f:
         p = json.load(f)
     cf = closed_forms(p)
+    # The peak: beam theory with the deck's own cohesive law (cohesive_beam.py), converged in
+    # its spacing; LEFM with the root rotation is the limit of a vanishing cohesive zone.
+    k_pen = contact_penalty(run)
+    beam = cohesive_beam.peak_load(p, k_pen, h=0.05)
+    beam_fine = cohesive_beam.peak_load(p, k_pen, h=0.025)
+    print(f"DCB {run}: the cohesive beam's peak {beam['peak']:.4g} N (spacing 0.05 mm; "
+          f"{beam_fine['peak']:.4g} N at 0.025), {100 * (beam['peak'] / cf['peak'] - 1):+.1f} % "
+          f"from LEFM with the root rotation ({cf['peak']:.4g} N); penalty in compression "
+          f"{k_pen:.4g} per area")
+    try:  # the same beam with the interface lumped at the run's node spacing, for comparison
+        lumped = cohesive_beam.peak_load(p, k_pen, h=p["dx"])["peak"]
+        print(f"       (with the interface lumped {p['dx']} mm apart like the run's nodes: "
+              f"{lumped:.4g} N, {100 * (lumped / beam['peak'] - 1):+.1f} %)")
+    except RuntimeError:
+        pass
     # Tip opening from nodout.
     tips = {}
     for r in rows(os.path.join(run, "nodout.csv")):
@@ -84,7 +120,8 @@ def main(argv):
     lin = [(d, f) for _, d, f in curve[:i_peak] if 0.1 * d_peak < d < 0.6 * d_peak]
     stiff = sum(f * d for d, f in lin) / sum(d * d for d, f in lin)  # least squares through 0
     check("linear branch stiffness P/delta [N/mm]", stiff, 1.0 / cf["compliance"], 0.05)
-    check("peak load (9 outputs smoothed) [N]", p_peak, cf["peak"], 0.05)
+    check("peak load (9 outputs smoothed) against the cohesive beam [N]", p_peak, beam["peak"],
+          0.05)
     # The tip force rings with the arms' high modes (each released node sets them going): the
     # quasi-static branch is the mean over bins of 0.5 mm of opening.
     prop = [(d, f) for _, d, f in curve[i_peak:] if d > 1.5 * d_peak]
@@ -141,7 +178,9 @@ def main(argv):
                   if d_peak * (0.8 + 0.05 * i) <= curve[-1][1]]
             ax.plot(dp, [cf["propagation"](x) for x in dp], ":",
                     label="LEFM propagation sqrt(2K^3 / (3 E I delta))")
-            ax.axhline(cf["peak"], color="grey", lw=0.5)
+            ax.axhline(beam["peak"], color="grey", lw=0.5, label="peak of the cohesive beam")
+            ax.axhline(cf["peak"], color="grey", lw=0.5, ls="--",
+                       label="LEFM peak with the root rotation")
             ax.set_xlabel("tip opening delta [mm]")
             ax.set_ylabel("load P [N]")
             ax.set_title(f"DCB, G_Ic = {cf['G_Ic']:.3g} N/mm, dx = {p['dx']} mm")

@@ -13,7 +13,7 @@ bonded (the slave side is the segment set of the upper arm's elements beyond a0)
 (x = 0) are pulled apart by prescribed displacements, slowly (many periods of the arms), up to
 a total opening DELTA. Elements DX long along the arms, NY across the width (NY = 1: a strip
 one element wide). --soften F divides C_N by F and sigma_max by sqrt(F): the same G_Ic with a
-cohesive zone sqrt(F) times longer (resolved by coarser elements). --ihq 0: the parts take the
+cohesive zone F^(1/4) times longer (resolved by coarser elements). --ihq 0: the parts take the
 deck's default (viscous) hourglass control. --width B: the specimen's width (20 mm).
 Poisson's ratio 0, so that beam theory holds for any width (see README.md).
 

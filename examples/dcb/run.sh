@@ -3,10 +3,12 @@
 # `plyform run`, and check each against beam theory (check.py; derivation in README.md):
 #   strip    one element across (0.5 x 20 mm elements, 40:1), the whole opening, 1 thread
 #   square   a 2 mm wide specimen meshed 4 across (0.5 x 0.5 mm), up to 6 ms (past the peak)
+#   wide     the full 20 mm width meshed 10 across (0.5 x 2 mm), up to 6 ms, 2 threads
 #   threads  the strip with 2 threads up to 4 ms: glstat.csv as the strip's, to the bit
 #   viscous  the unsoftened interface under the viscous hourglass form: run must warn
-# The first three with --soften 10 (C_N 1160 MPa/mm, sigma_max 18 MPa: the same G_Ic, a cohesive zone of
-# about 3 mm that 0.5 mm elements resolve).
+# All but the last with --soften 10 (C_N 1160 MPa/mm, sigma_max 18 MPa: the same G_Ic, a
+# cohesive zone of about 4 mm that 0.5 mm elements resolve). Each run's `plyform check` goes to
+# its check.txt (check.py takes the contact penalty from it).
 #
 #   run.sh [PLYFORM] [OUTDIR]
 set -euo pipefail
@@ -29,6 +31,7 @@ one() {  # one SUBDIR THREADS GENERATOR-OPTIONS...
   local sub=$1 threads=$2
   shift 2
   "${gen_python}" "${here}/generate.py" "${outdir}/${sub}" --soften 10 "$@"
+  "${plyform}" check "${outdir}/${sub}/dcb.k" >"${outdir}/${sub}/check.txt"
   echo "run.sh: plyform run ${sub}/dcb.k --threads ${threads}"
   "${plyform}" run "${outdir}/${sub}/dcb.k" -o "${outdir}/${sub}" --threads "${threads}" \
     </dev/null | tail -n 3
@@ -42,6 +45,9 @@ one square 1 --dx 0.5 --ny 4 --width 2 --end 0.006 --every 0.5
   status=1
 # The strip's deck with 2 threads, stopped at 4 ms: every glstat row of it (but its last, at
 # its own end time) is the strip's, to the bit.
+one wide 2 --dx 0.5 --ny 10 --end 0.006 --every 0.5
+"${check_python}" "${here}/check.py" "${outdir}/wide" --plot "${outdir}/wide/load_opening.png" ||
+  status=1
 mkdir -p "${outdir}/threads"
 sed '/^\*CONTROL_TERMINATION/{n;s/.*/     0.004/}' "${outdir}/strip/dcb.k" >"${outdir}/threads/dcb.k"
 echo "run.sh: plyform run threads/dcb.k --threads 2"
@@ -71,5 +77,5 @@ else
   cat "${outdir}/viscous/stderr.txt"
   status=1
 fi
-echo "run.sh: done; results in ${outdir} (strip/, square/, threads/, viscous/)"
+echo "run.sh: done; results in ${outdir} (strip/, square/, wide/, threads/, viscous/)"
 exit "${status}"
