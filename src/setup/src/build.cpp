@@ -357,13 +357,20 @@ struct Builder {
     m.v0z.assign(n, 0.0);
     for (const model::InitialVelocityGenerationDesc& v : d.initial_velocities) {
       std::vector<char> pick(n, 0);
+      // The nodes of every element block of the part, solid or shell (a rigid part's blocks
+      // too: the rigid body takes its velocity from its nodes').
       const auto mark_part = [&](int part_id) {
         const auto it = part.find(part_id);
         if (it == part.end())
           return;
-        const core::SolidBlock& b = m.solid_blocks[static_cast<std::size_t>(it->second)];
-        for (Index c : b.connectivity)
-          pick[static_cast<std::size_t>(c)] = 1;
+        const auto mark = [&](const auto& blocks) {
+          for (const auto& b : blocks)
+            if (b.part == it->second)
+              for (Index c : b.connectivity)
+                pick[static_cast<std::size_t>(c)] = 1;
+        };
+        mark(m.solid_blocks);
+        mark(m.shell_blocks);
       };
       if (v.target_id == 0) {
         std::fill(pick.begin(), pick.end(), 1);

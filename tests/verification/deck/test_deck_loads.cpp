@@ -112,5 +112,50 @@ TEST(DeckLoads, InitialVelocityGenerationAndMomentum) {
   }
 }
 
+// A shell plate (part 1, listed first) beside the bar, the bar then part 2: STYP 2 on either
+// part moves that part's nodes only. The bar's momentum is then its own mass times v, the
+// plate's stays zero (and the other way round).
+std::string plate_and_bar(int moving_part) {
+  std::string bar = deck("");
+  bar = bar.substr(0, bar.rfind("*END"));
+  // The bar's part becomes 2 (its *PART card and its elements' PID).
+  std::string out;
+  std::istringstream in(bar);
+  std::string line, section;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] == '*')
+      section = line;
+    if (section == "*PART" && line == "         1         1         1")
+      line = "         2         1         1";
+    if (section == "*ELEMENT_SOLID" && line[0] != '*')
+      line.replace(line.find(','), 3, ",2,");
+    out += line + "\n";
+  }
+  std::ostringstream os;
+  os << out << "*PART\nplate\n         1         2         1\n";
+  os << "*SECTION_SHELL\n         2         2    0.8333         2\n       0.5       0.5       0.5"
+        "       0.5\n";
+  os << "*NODE\n101,0,0,5\n102,4,0,5\n103,4,2,5\n104,0,2,5\n";
+  os << "*ELEMENT_SHELL\n1,1,101,102,103,104\n";
+  os << "*INITIAL_VELOCITY_GENERATION\n         " << moving_part
+     << "         2       0.0       0.0       0.0       7.0\n       0.0       0.0       0.0"
+        "       0.0       0.0       1.0\n";
+  os << "*END\n";
+  return os.str();
+}
+
+TEST(DeckLoads, InitialVelocityGenerationOnAPartAfterAShellPart) {
+  for (int part : {1, 2}) {
+    const core::Model m = build(plate_and_bar(part));
+    for (std::size_t i = 0; i < m.node_count(); ++i) {
+      const bool plate = m.node_id[i] > 100;
+      const double expected = (plate == (part == 1)) ? 7.0 : 0.0;
+      EXPECT_EQ(m.v0z[i], expected) << "part " << part << ", node " << m.node_id[i];
+      EXPECT_EQ(m.v0x[i], 0.0);
+      EXPECT_EQ(m.v0y[i], 0.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace plyform
