@@ -91,6 +91,13 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
              "work {:.6g}, ratio {:.6f}\n",
              result.last.kinetic, result.last.internal, result.last.hourglass,
              result.last.external_work, result.last.ratio);
+  if (result.thread_reductions > 0) {
+    fmt::print(out,
+               "threads: the cores were shared with other work; 1 thread instead of {} for "
+               "{:.3g} of the {:.3g} s ({} time{})\n",
+               options.threads, result.reduced_thread_seconds, result.wall_seconds,
+               result.thread_reductions, result.thread_reductions == 1 ? "" : "s");
+  }
   if (!model.contacts.empty()) {
     std::size_t slaves = 0;
     for (const core::ContactInterface& c : model.contacts)

@@ -14,6 +14,7 @@
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "mass.hpp"
+#include "plyform/engine/thread_governor.hpp"
 
 namespace plyform::engine {
 namespace {
@@ -89,6 +90,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
 #ifdef _OPENMP
   omp_set_num_threads(std::max(1, options.threads));
 #endif
+  ThreadGovernor governor(options.threads);
   const auto wall_start = std::chrono::steady_clock::now();
   const auto wall = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -738,6 +740,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     dt = dt_next;
     write_outputs(false);
     sink.progress(t, end_time, cycle, dt, wall());
+    governor.tick();
   }
   if (res.ok && !state_written)
     write_outputs(true);
@@ -749,6 +752,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   res.time = t;
   res.contact_searches = contact ? contact->searches() : 0;
   res.wall_seconds = wall();
+  res.thread_reductions = governor.reductions();
+  res.reduced_thread_seconds = governor.reduced_seconds();
   res.last = energies();
   check_books(res.last);
   if (res.wall_seconds > 0.0) {

@@ -80,6 +80,10 @@ struct RunResult {
   Energies last;
   std::vector<std::string> warnings;
   long contact_searches = 0;  ///< full contact searches (bucket sorts) done
+  /// Times the run dropped to one thread because its cores were shared (thread_governor.hpp),
+  /// and the wall seconds it ran so.
+  int thread_reductions = 0;
+  double reduced_thread_seconds = 0.0;
 };
 
 /// Runs the model to its termination time (or the first instability) and returns what
