@@ -178,6 +178,21 @@ TEST(CheckCommand, ListsTheContacts) {
       << r.out;
 }
 
+// A deck is valid or not: without *CONTROL_TERMINATION the build fails, and check must not
+// first call it valid and summarise it.
+TEST(CheckCommand, ADeckThatDoesNotBuildIsNeverCalledValid) {
+  std::string text = kContacts;
+  const std::string term = "*CONTROL_TERMINATION\n1.0\n";
+  text.erase(text.find(term), term.size());
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("no_end.k", text));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out.find("valid"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("contacts:"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("*CONTROL_TERMINATION"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no_end.k: 1 error"), std::string::npos) << r.err;
+}
+
 // The shipped fundamental model: the build's view of its cohesive contact. 25 slave nodes (the
 // 4 x 4 upper plate) against 36 segments (the 6 x 6 lower plate), half of 1 mm on both sides,
 // following the thickness (a cohesive interface); interior slave nodes carry 0.1 K A / d of a

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <variant>
@@ -102,15 +103,7 @@ const char* material_name(const core::Material& m) {
 
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
 // runtime model cannot be built.
-bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& err) {
-  const setup::BuildResult built = setup::build(desc);
-  for (const auto& d : built.errors)
-    fmt::print(err, "error: {}\n", d.to_string());
-  for (const auto& w : built.warnings)
-    fmt::print(err, "warning: {}\n", w.to_string());
-  if (!built.model)
-    return false;
-  const core::Model& m = *built.model;
+void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream& out) {
   if (desc.units) {
     fmt::print(out,
                "units (as declared, no conversion): length {}, time {}, mass {}, temperature {}\n",
@@ -205,7 +198,6 @@ bool print_mesh(const model::ModelDesc& desc, std::ostream& out, std::ostream& e
                "{:.3g} cycles\n",
                dt, m.controls.tssfac, dt_element, m.controls.end_time / dt);
   }
-  return true;
 }
 
 }  // namespace
@@ -226,6 +218,21 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
   }
 
   const model::ModelDesc& m = read.model;
+  // A deck with a mesh must also build into a runnable model; a deck is valid or not, so the
+  // build's errors come before anything is called valid.
+  std::optional<setup::BuildResult> built;
+  if (!m.nodes.empty() || !m.solids.empty()) {
+    built = setup::build(m);
+    for (const auto& w : built->warnings)
+      fmt::print(err, "warning: {}\n", w.to_string());
+    if (!built->model) {
+      for (const auto& d : built->errors)
+        fmt::print(err, "error: {}\n", d.to_string());
+      fmt::print(err, "{}: {} error{}\n", deck.string(), built->errors.size(),
+                 built->errors.size() == 1 ? "" : "s");
+      return 1;
+    }
+  }
   fmt::print(out, "{}: valid\n", deck.string());
   if (!m.title.empty())
     fmt::print(out, "title: {}\n", m.title);
@@ -239,11 +246,8 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
   fmt::print(out, "cohesive interfaces: {}\n", m.user_interface_frictions.size());
   for (const auto& u : m.user_interface_frictions)
     print_law(m, u, out);
-  // A deck with a mesh must also build into a runnable model.
-  if (!m.nodes.empty() || !m.solids.empty()) {
-    if (!print_mesh(m, out, err))
-      return 1;
-  }
+  if (built)
+    print_mesh(m, *built->model, out);
   return 0;
 }
 
