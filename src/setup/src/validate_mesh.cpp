@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -341,6 +342,48 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   for (const model::LoadNodeDesc& l : model.nodal_loads) {
     check_target(l.target, l.target_id, l.where, load_keyword(l.target));
     check_ref(curves, l.curve_id, l.where, load_keyword(l.target), "LCID", errors);
+  }
+  // Rigid parts: each needs elements (its mass and inertia come from them), and no node may
+  // belong to two of them (merging rigid bodies, *CONSTRAINED_RIGID_BODIES, is not supported):
+  // found here, with the card, rather than when the run starts.
+  {
+    const auto is_rigid = [&](int part_id) {
+      const auto p = part_by_id.find(part_id);
+      return p != part_by_id.end() && rigid_materials.contains(p->second->material_id);
+    };
+    std::unordered_map<int, int> rigid_part_of_node;  // node id -> the first rigid part using it
+    std::unordered_set<int> with_elements;
+    std::set<std::pair<int, int>> reported_pairs;
+    const auto visit = [&](const auto& e, std::string_view keyword) {
+      if (!is_rigid(e.part_id))
+        return;
+      with_elements.insert(e.part_id);
+      for (std::size_t i = 0; i < e.nodes.size(); ++i) {
+        const auto [it, fresh] = rigid_part_of_node.emplace(e.nodes[i], e.part_id);
+        if (fresh || it->second == e.part_id)
+          continue;
+        if (reported_pairs.emplace(it->second, e.part_id).second) {
+          errors.push_back(
+              {e.where, std::string(keyword), std::string(kNodeFields[i]),
+               cat("element ", e.id, " of rigid part ", e.part_id, " uses node ", e.nodes[i],
+                   ", which rigid part ", it->second,
+                   " uses too: merging rigid bodies is not supported (give each body its own "
+                   "nodes; the first shared node of each pair of parts is reported)")});
+        }
+      }
+    };
+    for (const model::ElementSolidDesc& e : model.solids)
+      visit(e, "*ELEMENT_SOLID");
+    for (const model::ElementShellDesc& e : model.shells)
+      visit(e, "*ELEMENT_SHELL");
+    for (const model::PartDesc& p : model.parts) {
+      if (is_rigid(p.id) && !with_elements.count(p.id)) {
+        errors.push_back({p.where, "*PART", "PID",
+                          cat("part ", p.id, " is rigid (*MAT_RIGID ", p.material_id,
+                              ") but has no elements: a rigid body takes its mass and inertia "
+                              "from its elements")});
+      }
+    }
   }
   // Rigid body motions and loads -> a part whose material is *MAT_RIGID, curve.
   const auto check_rigid_part = [&](int part_id, const SourceLocation& where,

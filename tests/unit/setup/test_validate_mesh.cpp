@@ -148,10 +148,10 @@ constexpr std::string_view kSheetDeck =
     "1,1,1,2,3,4\n"  // 9: quad
     "2,1,2,5,6,6\n"  // 10: triangle, N4 = N3
     "*ELEMENT_SHELL_THICKNESS\n"
-    "3,2,1,2,3,4\n"  // 12: punch
+    "3,2,11,12,13,14\n"  // 12: punch (each rigid body on its own nodes, at the end)
     "0.5,0.5,0.5,0.5\n"
     "*ELEMENT_SHELL\n"
-    "4,3,2,5,6,3\n"  // 15: die
+    "4,3,21,22,23,24\n"  // 15: die
     "*PART\nblank\n1,1,1\n"
     "*PART\npunch\n2,2,2\n"
     "*PART\ndie\n3,1,3\n"
@@ -163,7 +163,9 @@ constexpr std::string_view kSheetDeck =
     "*DEFINE_CURVE\n7\n0,200\n1,400\n"
     "*DEFINE_CURVE\n8\n0,0\n1,1\n"
     "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n2,3,2,8,-10.0\n2,7,0,8\n"
-    "*LOAD_RIGID_BODY\n3,3,8,-100.0\n";
+    "*LOAD_RIGID_BODY\n3,3,8,-100.0\n"
+    "*NODE\n11,0,0,1\n12,1,0,1\n13,1,1,1\n14,0,1,1\n21,0,0,-1\n22,2,0,-1\n23,2,1,-1\n"
+    "24,0,1,-1\n";
 
 /// The line number of the k-th line (1-based) appended after kSheetDeck.
 int after_sheet_deck(int k) {
@@ -288,6 +290,29 @@ TEST(ValidateMesh, RigidMotionsAndLoadsNeedARigidPart) {
   EXPECT_EQ(errors[4].where.line, after_sheet_deck(9));
   EXPECT_EQ(errors[5].where.line, after_sheet_deck(10));
   EXPECT_EQ(errors[5].field, "LCID");
+}
+
+// A node shared by two rigid bodies and a rigid part without elements: found with their cards
+// (the engine would stop at the start of the run without either).
+TEST(ValidateMesh, RigidBodiesOwnTheirNodesAndHaveElements) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*ELEMENT_SHELL\n"
+      "40,3,21,22,13,24\n"           // 2: the die's element on the punch's node 13
+      "41,3,21,22,12,24\n"           // 3: the same pair of bodies: reported once
+      "42,1,1,2,11,4\n"              // 4: a deformable part on the punch's node: fine
+      "*PART\nempty tool\n8,2,2\n";  // 7: rigid, no element
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 2u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(2)) +
+                ": *ELEMENT_SHELL: field N3: element 40 of rigid part 3 uses node 13, which rigid "
+                "part 2 uses too: merging rigid bodies is not supported (give each body its own "
+                "nodes; the first shared node of each pair of parts is reported)");
+  EXPECT_EQ(errors[1].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(7)) +
+                ": *PART: field PID: part 8 is rigid (*MAT_RIGID 2) but has no elements: a rigid "
+                "body takes its mass and inertia from its elements");
 }
 
 }  // namespace
