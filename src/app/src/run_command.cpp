@@ -48,7 +48,8 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   summary.version = "0.1.0";
   summary.end_time = model.controls.end_time;
   summary.nodes = static_cast<long>(model.node_count());
-  summary.elements = static_cast<long>(model.solid_count());
+  summary.elements = static_cast<long>(model.solid_count() + model.shell_count());
+  summary.deformable_elements = static_cast<long>(model.deformable_element_count());
   summary.threads = options.threads;
   engine::RunResult result;
   try {

@@ -560,6 +560,7 @@ ShellResult shell_forces(const core::ShellBlock& block, const core::Material& ma
         } else {
           ShellResult r;  // setup::build admits only the shell laws
           r.failed = true;
+          r.unsupported_material = true;
           r.failed_element = begin;
           return r;
         }

@@ -580,6 +580,7 @@ SolidResult solid_forces(const core::SolidBlock& block, const core::Material& ma
           // setup::build admits only the solid laws; reaching this is a programming error.
           SolidResult r;
           r.failed = true;
+          r.unsupported_material = true;
           r.failed_element = begin;
           return r;
         }

@@ -63,6 +63,7 @@ struct InternalResult {
   double hourglass = 0.0;
   double internal = 0.0;  ///< stress work of the cycle, from the elements' stresses
   bool failed = false;
+  bool unsupported_material = false;  ///< failed: a kernel had no law for the material
   WorkItem failed_item{};
   std::size_t failed_element = 0;
 };
@@ -74,6 +75,7 @@ struct ItemResult {
   double hourglass_energy = 0.0;
   double internal_energy = 0.0;
   bool failed = false;
+  bool unsupported_material = false;
   std::size_t failed_element = 0;
 };
 
@@ -200,9 +202,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     phase_offset[p + 1] = phase_offset[p] + phases[p].size();
   }
   std::vector<ItemResult> item_results(phase_offset.back());
-  std::size_t element_count = model.solid_count();
-  for (const auto& b : model.shell_blocks)
-    element_count += b.size();
+  // The rate counts the elements the cycle integrates (not a rigid tool's).
+  const std::size_t element_count = model.deformable_element_count();
   // Per block: accumulated stress work and hourglass energy (the run's warnings name the part).
   std::vector<std::array<double, 2>> shell_books(model.shell_blocks.size(), {0.0, 0.0});
   std::vector<std::array<double, 2>> solid_books(model.solid_blocks.size(), {0.0, 0.0});
@@ -228,15 +229,15 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
             const element::ShellResult x = element::shell_forces(
                 blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block],
                 view, spin, dt, it.begin, it.end, forces, moments);
-            out = {x.dt_min,          x.dt_element, x.hourglass_energy,
-                   x.internal_energy, x.failed,     x.failed_element};
+            out = {x.dt_min, x.dt_element,           x.hourglass_energy, x.internal_energy,
+                   x.failed, x.unsupported_material, x.failed_element};
           } else {
             const core::SolidBlock& blk = model.solid_blocks[it.block];
             const element::SolidResult x =
                 element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
                                       solids[it.block], view, dt, it.begin, it.end, forces);
-            out = {x.dt_min,          x.dt_element, x.hourglass_energy,
-                   x.internal_energy, x.failed,     x.failed_element};
+            out = {x.dt_min, x.dt_element,           x.hourglass_energy, x.internal_energy,
+                   x.failed, x.unsupported_material, x.failed_element};
           }
         }
       }
@@ -247,6 +248,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         const ItemResult& x = item_results[phase_offset[p] + w];
         if (x.failed && !r.failed) {
           r.failed = true;
+          r.unsupported_material = x.unsupported_material;
           r.failed_item = phases[p][w];
           r.failed_element = x.failed_element;
         }
@@ -272,6 +274,19 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     };
     return it.shell ? name(model.shell_blocks[it.block], "shell")
                     : name(model.solid_blocks[it.block], "solid");
+  };
+  // Why the element loop stopped: a collapsed element, or (an internal error: setup admits only
+  // the laws each kernel has) a material the kernel has no law for.
+  const auto failure_text = [&](const InternalResult& r) {
+    const std::string where = element_name(r.failed_item, r.failed_element);
+    if (r.unsupported_material) {
+      return "the " + std::string(r.failed_item.shell ? "shell" : "solid") +
+             " kernel has no law for the material of " + where +
+             " (an internal error: setup should have refused the part)";
+    }
+    return (r.failed_item.shell ? "zero area or thickness, or non-finite geometry, in "
+                                : "non-positive volume in ") +
+           where;
   };
 
   double t = 0.0;
@@ -301,8 +316,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   pack();
   InternalResult ir = internal(0.0);
   if (ir.failed) {
-    fail("non-positive volume in " + element_name(ir.failed_item, ir.failed_element) +
-         " in the initial mesh");
+    fail(failure_text(ir) + " in the initial mesh");
     return res;
   }
   const double tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
@@ -694,8 +708,7 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
     ir = internal(dt);
     if (ir.failed) {
       sync();
-      fail("non-positive volume in " + element_name(ir.failed_item, ir.failed_element) +
-           " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+      fail(failure_text(ir) + " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
       break;
     }
     hourglass += ir.hourglass;

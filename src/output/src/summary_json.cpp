@@ -147,6 +147,7 @@ std::string summary_json_text(const RunSummary& s) {
   real("added_mass_ratio", s.added_mass_ratio);
   integer("nodes", s.nodes);
   integer("elements", s.elements);
+  integer("deformable_elements", s.deformable_elements);
   integer("threads", s.threads);
   key("warnings");
   if (s.warnings.empty()) {

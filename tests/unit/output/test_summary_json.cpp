@@ -254,6 +254,7 @@ RunSummary example_summary() {
   s.added_mass_ratio = 0.0;
   s.nodes = 1000;
   s.elements = 800;
+  s.deformable_elements = 700;
   s.threads = 2;
   s.warnings = {"line one\nline \"two\"", "tab\there, back\\slash, bell\x07"};
   return s;
@@ -276,6 +277,7 @@ TEST(SummaryJson, ExpectedText) {
   "added_mass_ratio": 0,
   "nodes": 1000,
   "elements": 800,
+  "deformable_elements": 700,
   "threads": 2,
   "warnings": [
     "line one\nline \"two\"",

@@ -293,3 +293,26 @@ TEST(ShellPlasticity, UniaxialTensionFollowsTheCurve) {
 
 }  // namespace
 }  // namespace plyform
+
+namespace plyform {
+namespace {
+
+// A shell block with a material the shell kernel has no law for (setup refuses such a part; a
+// model built in code can still hold one): the run stops at once and says so, naming the element
+// and part, instead of reporting a collapsed element.
+TEST(ShellKernel, AMaterialWithoutAShellLawIsReportedAsSuch) {
+  core::Model m =
+      test::plate(2.0, 1.0, 2, 1, 0.1, core::MooneyRivlinMaterial{1e-9, 0.49, 0.5, 0.1});
+  m.controls.end_time = 1e-6;
+  test::RecordingSink sink;
+  const engine::RunResult r = engine::run(m, sink, {});
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("the shell kernel has no law for the material of shell element 1 "
+                         "(part 1)"),
+            std::string::npos)
+      << r.error;
+  EXPECT_EQ(r.error.find("volume"), std::string::npos) << r.error;
+}
+
+}  // namespace
+}  // namespace plyform

@@ -171,6 +171,10 @@ struct Model {
 
   [[nodiscard]] std::size_t node_count() const { return node_id.size(); }
   [[nodiscard]] std::size_t solid_count() const;
+  [[nodiscard]] std::size_t shell_count() const;
+  /// Solids and shells whose material is not rigid: the elements the cycle integrates (a
+  /// rigid part's elements only give it mass, inertia and a contact surface).
+  [[nodiscard]] std::size_t deformable_element_count() const;
 };
 
 /// Reorders the elements of every solid and shell block by colour (greedy, in element order)

@@ -47,8 +47,9 @@ struct ShellResult {
   double dt_min = 1e300;
   std::size_t dt_element = 0;
   double hourglass_energy = 0.0;
-  double internal_energy = 0.0;  ///< stress work of the step, from the elements' stresses
-  bool failed = false;           ///< a collapsed element (zero area or thickness)
+  double internal_energy = 0.0;       ///< stress work of the step, from the elements' stresses
+  bool failed = false;                ///< a collapsed element (zero area or thickness)
+  bool unsupported_material = false;  ///< failed: the material has no shell kernel
   std::size_t failed_element = 0;
 };
 

@@ -48,11 +48,12 @@ struct SolidBlockState {
 
 /// What a kernel call reports for its element range.
 struct SolidResult {
-  double dt_min = 1e300;          ///< smallest stable step of the range (without TSSFAC)
-  std::size_t dt_element = 0;     ///< element (index in the block) that sets it
-  double hourglass_energy = 0.0;  ///< hourglass work of this cycle
-  double internal_energy = 0.0;   ///< stress work of this cycle, from the elements' stresses
-  bool failed = false;            ///< a non-positive volume or Jacobian
+  double dt_min = 1e300;              ///< smallest stable step of the range (without TSSFAC)
+  std::size_t dt_element = 0;         ///< element (index in the block) that sets it
+  double hourglass_energy = 0.0;      ///< hourglass work of this cycle
+  double internal_energy = 0.0;       ///< stress work of this cycle, from the elements' stresses
+  bool failed = false;                ///< a non-positive volume or Jacobian
+  bool unsupported_material = false;  ///< failed: the material has no solid kernel
   std::size_t failed_element = 0;
 };
 

@@ -24,7 +24,8 @@ struct RunSummary {
   double added_mass = 0.0;        ///< mass added by mass scaling at the end (model mass unit)
   double added_mass_ratio = 0.0;  ///< added_mass / physical mass (dimensionless)
   long nodes = 0;
-  long elements = 0;
+  long elements = 0;             ///< solids and shells, rigid parts' included
+  long deformable_elements = 0;  ///< what element_cycles_per_second counts
   int threads = 1;
   std::vector<std::string> warnings;
 };
