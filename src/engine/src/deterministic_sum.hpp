@@ -15,7 +15,14 @@ template <std::size_t N, class F>
 std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
   constexpr std::size_t kChunk = 1024;  // many chunks: balanced threads on small models too
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::array<double, N>> partial(chunks);
+  // The chunks' sums, kept between calls (each instantiation its own; called outside parallel
+  // regions) so that the cycle does not allocate.
+  thread_local std::vector<std::array<double, N>> scratch;
+  if (scratch.size() < chunks)
+    scratch.resize(chunks);
+  // The calling thread's buffer, by pointer: inside the parallel loop the name `scratch` would
+  // be each worker's own (empty) copy.
+  std::array<double, N>* const partial = scratch.data();
 #pragma omp parallel for schedule(static) proc_bind(close)
   for (long c = 0; c < static_cast<long>(chunks); ++c) {
     const std::size_t b = static_cast<std::size_t>(c) * kChunk;
@@ -23,12 +30,12 @@ std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
     std::array<double, N> acc{};
     for (std::size_t i = b; i < e; ++i)
       term(i, acc);
-    partial[static_cast<std::size_t>(c)] = acc;
+    partial[c] = acc;
   }
   std::array<double, N> total{};
-  for (const auto& p : partial)
+  for (std::size_t c = 0; c < chunks; ++c)
     for (std::size_t k = 0; k < N; ++k)
-      total[k] += p[k];
+      total[k] += partial[c][k];
   return total;
 }
 

@@ -516,7 +516,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
         next_ext += d[0] * s.ex[i] + d[1] * s.ey[i] + d[2] * s.ez[i];
       }
       // Work of the bodies' prescribed motions and constraints (their reactions).
-      for (const auto& b : rigid_bodies->report()) {
+      for (std::size_t k = 0; k < rigid_bodies->size(); ++k) {  // no allocation in the cycle
+        const rigid::RigidBodies::BodyReport b = rigid_bodies->report(k);
         prev_ext += (b.reaction[0] * b.velocity[0] + b.reaction[1] * b.velocity[1] +
                      b.reaction[2] * b.velocity[2] + b.reaction_moment[0] * b.omega[0] +
                      b.reaction_moment[1] * b.omega[1] + b.reaction_moment[2] * b.omega[2]) *

@@ -435,28 +435,32 @@ void RigidBodies::advance_body(Body& b, const StepTimes& step, const NodalArrays
   }
 }
 
+RigidBodies::BodyReport RigidBodies::report(std::size_t k) const {
+  const Body& b = bodies_[k];
+  const double s = w_interp_;
+  BodyReport r;
+  r.part_id = b.part_id;
+  r.mass = b.props.mass;
+  r.force = b.force;
+  r.moment = b.moment;
+  r.load_force = b.load_force;
+  r.load_moment = b.load_moment;
+  r.reaction = b.reaction;
+  r.reaction_moment = b.reaction_moment;
+  r.centre = b.xc_t;
+  for (std::size_t d = 0; d < 3; ++d) {
+    r.velocity[d] = b.v_old[d] + (b.v[d] - b.v_old[d]) * s;
+    r.omega[d] = b.w_old[d] + (b.w[d] - b.w_old[d]) * s;
+    r.angular_momentum[d] = b.l_old[d] + (b.l[d] - b.l_old[d]) * s;
+  }
+  return r;
+}
+
 std::vector<RigidBodies::BodyReport> RigidBodies::report() const {
   std::vector<BodyReport> out;
   out.reserve(bodies_.size());
-  const double s = w_interp_;
-  for (const Body& b : bodies_) {
-    BodyReport r;
-    r.part_id = b.part_id;
-    r.mass = b.props.mass;
-    r.force = b.force;
-    r.moment = b.moment;
-    r.load_force = b.load_force;
-    r.load_moment = b.load_moment;
-    r.reaction = b.reaction;
-    r.reaction_moment = b.reaction_moment;
-    r.centre = b.xc_t;
-    for (std::size_t d = 0; d < 3; ++d) {
-      r.velocity[d] = b.v_old[d] + (b.v[d] - b.v_old[d]) * s;
-      r.omega[d] = b.w_old[d] + (b.w[d] - b.w_old[d]) * s;
-      r.angular_momentum[d] = b.l_old[d] + (b.l[d] - b.l_old[d]) * s;
-    }
-    out.push_back(r);
-  }
+  for (std::size_t k = 0; k < bodies_.size(); ++k)
+    out.push_back(report(k));
   return out;
 }
 

@@ -24,8 +24,8 @@
 namespace plyform::rigid {
 
 struct MassProperties {
-  double mass = 0.0;                ///< [kg]
-  std::array<double, 3> centre{};   ///< centre of mass [m]
+  double mass = 0.0;                ///< [mass]
+  std::array<double, 3> centre{};   ///< centre of mass [length]
   std::array<double, 9> inertia{};  ///< about the centre, global axes, row-major [kg m^2]
   std::vector<core::Index> nodes;   ///< nodes of the elements, ascending
   std::vector<double> nodal_mass;   ///< consistent row sums rho int N_a dV, per entry of nodes

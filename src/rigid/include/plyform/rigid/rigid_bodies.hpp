@@ -53,7 +53,7 @@
 
 namespace plyform::rigid {
 
-/// Times of one call of RigidBodies::advance [s].
+/// Times of one call of RigidBodies::advance [time].
 struct StepTimes {
   double t = 0.0;        ///< t_{n+1}: the time of the forces
   double dt_prev = 0.0;  ///< t_{n+1} - t_n (0 at the first call, t = 0)
@@ -63,13 +63,13 @@ struct StepTimes {
 
 /// The engine's nodal arrays (structure of arrays, length node_count), as pointers.
 struct NodalArrays {
-  const double* fx = nullptr;  ///< internal forces at t_{n+1} [N]
+  const double* fx = nullptr;  ///< internal forces at t_{n+1} [force]
   const double* fy = nullptr;
   const double* fz = nullptr;
-  const double* ex = nullptr;  ///< external forces at t_{n+1} (loads, contact) [N]
+  const double* ex = nullptr;  ///< external forces at t_{n+1} (loads, contact) [force]
   const double* ey = nullptr;
   const double* ez = nullptr;
-  const double* ux = nullptr;  ///< displacements at t_{n+1} from Model::x0/y0/z0 [m]
+  const double* ux = nullptr;  ///< displacements at t_{n+1} from Model::x0/y0/z0 [length]
   const double* uy = nullptr;
   const double* uz = nullptr;
   double* vx = nullptr;  ///< out: velocities of the rigid nodes for [t_{n+1}, t_{n+2}] [m/s]
@@ -86,19 +86,20 @@ class RigidBodies {
   /// interpolated between the half steps as the engine does for its nodes.
   struct BodyReport {
     core::GlobalId part_id = 0;
-    double mass = 0.0;                    ///< [kg]
-    std::array<double, 3> force{};        ///< sum of e - f over the body's nodes [N]
-    std::array<double, 3> moment{};       ///< their moment about the centre [N m]
-    std::array<double, 3> load_force{};   ///< *LOAD_RIGID_BODY forces [N]
-    std::array<double, 3> load_moment{};  ///< *LOAD_RIGID_BODY moments [N m]
+    double mass = 0.0;                    ///< [mass]
+    std::array<double, 3> force{};        ///< sum of e - f over the body's nodes [force]
+    std::array<double, 3> moment{};       ///< their moment about the centre [force length]
+    std::array<double, 3> load_force{};   ///< *LOAD_RIGID_BODY forces [force]
+    std::array<double, 3> load_moment{};  ///< *LOAD_RIGID_BODY moments [force length]
     /// Force and moment of the constraints and prescribed motions:
-    /// m dV/dt - (force + load_force), dL/dt - (moment + load_moment) [N], [N m].
+    /// m dV/dt - (force + load_force), dL/dt - (moment + load_moment) [force], [force length].
     std::array<double, 3> reaction{};
     std::array<double, 3> reaction_moment{};
-    std::array<double, 3> centre{};            ///< centre of mass [m]
-    std::array<double, 3> velocity{};          ///< [m/s]
-    std::array<double, 3> omega{};             ///< angular velocity, global axes [rad/s]
-    std::array<double, 3> angular_momentum{};  ///< about the centre, global axes [kg m^2/s]
+    std::array<double, 3> centre{};    ///< centre of mass [length]
+    std::array<double, 3> velocity{};  ///< [length/time]
+    std::array<double, 3> omega{};     ///< angular velocity, global axes [1/time]
+    std::array<double, 3>
+        angular_momentum{};  ///< about the centre, global axes [mass length^2/time]
   };
 
   /// Finds the parts with RigidMaterial, their nodes (of their solid and shell elements) and
@@ -123,8 +124,10 @@ class RigidBodies {
   /// velocities (and angular velocities when nodes.wx is not null). No allocation.
   void advance(const StepTimes& step, const NodalArrays& nodes);
 
+  /// Body b's report; report() gives all of them (it allocates: for outputs, not the cycle).
+  [[nodiscard]] BodyReport report(std::size_t b) const;
   [[nodiscard]] std::vector<BodyReport> report() const;
-  /// Kinetic energy of the bodies at t_{n+1}: m V.V / 2 + Omega.L / 2 [J].
+  /// Kinetic energy of the bodies at t_{n+1}: m V.V / 2 + Omega.L / 2 [energy].
   [[nodiscard]] double kinetic_energy() const;
 
  private:
