@@ -35,7 +35,8 @@ constexpr std::array kTerminationFields{
               .type = FieldType::kReal,
               .min_value = 0.0,
               .unit = "-",
-              .description = "stop when the step falls below DTMIN x the initial step"},
+              .description = "stop when the step falls below DTMIN x the initial step (0: 1e-4, "
+                             "plyform's default floor)"},
     FieldSpec{.name = "ENDENG",
               .type = FieldType::kReal,
               .unit = "-",
