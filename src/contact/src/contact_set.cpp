@@ -7,6 +7,7 @@
 
 #include "plyform/contact/bucket_search.hpp"
 #include "plyform/contact/segment_projection.hpp"
+#include "plyform/core/invariant.hpp"
 #include "plyform/law/law.hpp"
 
 namespace plyform::contact {
@@ -135,6 +136,19 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       params.release_gap = std::min(params.release_gap, capture);
     }
     for (const core::ContactPass& cp : ci.passes) {
+      if constexpr (core::kCheckInvariants) {
+        const auto in_range = [&](core::Index n) {
+          return n >= 0 && static_cast<std::size_t>(n) < model.node_count();
+        };
+        for (core::Index n : cp.slave_nodes)
+          PLYFORM_INVARIANT(in_range(n), "slave node indices in range");
+        for (core::Index n : cp.segments)
+          PLYFORM_INVARIANT(in_range(n), "segment node indices in range");
+        PLYFORM_INVARIANT(cp.segments.size() == 4 * cp.segment_offset.size() &&
+                              cp.slave_offset.size() == cp.slave_count() &&
+                              cp.slave_area.size() == cp.slave_count(),
+                          "a pass's arrays of matching lengths");
+      }
       auto pr = std::make_unique<PassRuntime>(params);
       pr->iface = &ci;
       pr->pass = &cp;
@@ -709,6 +723,38 @@ inline void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index 
   du[0] = u0 + r0 - rn * n[0], du[1] = u1 + r1 - rn * n[1], du[2] = u2 + r2 - rn * n[2];
 }
 
+// The law's tangential history of a slave node (its stick slip and its adhesive opening) is
+// written in the node's tangent axes. Those axes come from the global x axis (y where the normal
+// is close to x), so they jump by up to 90 degrees when the normal passes near x, and they turn
+// with the surface. Before the axes are replaced, each history vector is taken back to global
+// components, turned by the smallest rotation that takes the old normal to the new one (the
+// surface carries it along), and written in the new axes: its direction and length stay what
+// they were on the surface, whatever the axes do.
+inline void carry_tangential_history(const law::BatchHistory& h, std::size_t k,
+                                     const double* old_frame, const double* n, const double* e1,
+                                     const double* e2) {
+  const double* n0 = old_frame;
+  const double c = n0[0] * n[0] + n0[1] * n[1] + n0[2] * n[2];
+  if (!(c > -0.5))  // no frame yet (zeros), or the node turned onto a far side: start afresh
+    return;
+  const double* a1 = old_frame + 3;
+  const double* a2 = old_frame + 6;
+  const auto carry = [&](double& x, double& y) {
+    if (x == 0.0 && y == 0.0)
+      return;
+    double v[3] = {x * a1[0] + y * a2[0], x * a1[1] + y * a2[1], x * a1[2] + y * a2[2]};
+    // R v = v - (v . n) (n0 + n) / (1 + c) for v normal to n0 (Rodrigues, the rotation about
+    // n0 x n that takes n0 to n).
+    const double vn = (v[0] * n[0] + v[1] * n[1] + v[2] * n[2]) / (1.0 + c);
+    for (int d = 0; d < 3; ++d)
+      v[d] -= vn * (n0[d] + n[d]);
+    x = v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2];
+    y = v[0] * e2[0] + v[1] * e2[1] + v[2] * e2[2];
+  };
+  carry(h.slip_x[k], h.slip_y[k]);
+  carry(h.opening_x[k], h.opening_y[k]);
+}
+
 // Geometry and law inputs of every slave node of a pass at the current positions; the first
 // half of the step's contact work with last cycle's forces. Fills the arrays.
 void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
@@ -794,6 +840,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     e1[2] *= inv_len;
     const double e2[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2],
                           n[0] * e1[1] - n[1] * e1[0]};
+    carry_tangential_history(h, k, fr, n, e1, e2);
     for (int c = 0; c < 3; ++c) {
       fr[c] = n[c];
       fr[3 + c] = e1[c];
@@ -1016,6 +1063,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         pr.prev_seg[k] = -1;
         continue;
       }
+      PLYFORM_INVARIANT(std::isfinite(f[0] + f[1] + f[2]), "a finite contact force");
+      PLYFORM_INVARIANT(static_cast<std::size_t>(s) < cp.segment_count(), "a segment in range");
       const auto sn = static_cast<std::size_t>(cp.slave_nodes[k]);
       fx[sn] -= f[0];
       fy[sn] -= f[1];

@@ -83,4 +83,50 @@ bool colour_element_blocks(Model& model) {
   return true;
 }
 
+namespace {
+
+template <std::size_t kNodes, class Block>
+bool block_is_independent(const Block& b, std::size_t node_count, std::vector<std::size_t>& seen) {
+  const std::size_t n = b.size();
+  if (b.colour_start.empty())
+    return n == 0;
+  if (b.colour_start.front() != 0 || b.colour_start.back() != n ||
+      !std::is_sorted(b.colour_start.begin(), b.colour_start.end()))
+    return false;
+  for (std::size_t c = 0; c + 1 < b.colour_start.size(); ++c) {
+    for (std::size_t e = b.colour_start[c]; e < b.colour_start[c + 1]; ++e) {
+      for (std::size_t i = 0; i < kNodes; ++i) {
+        const Index node = b.connectivity[kNodes * e + i];
+        if (node < 0 || static_cast<std::size_t>(node) >= node_count)
+          return false;
+        // A triangle repeats its third node within the element: only other elements count.
+        std::size_t& mark = seen[static_cast<std::size_t>(node)];
+        if (mark == e + 1)
+          continue;
+        if (mark > b.colour_start[c])  // an earlier element of this colour (marks are e + 1)
+          return false;
+        mark = e + 1;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool colouring_is_independent(const Model& model) {
+  std::vector<std::size_t> seen;
+  for (const SolidBlock& b : model.solid_blocks) {
+    seen.assign(model.node_count(), 0);
+    if (!block_is_independent<8>(b, model.node_count(), seen))
+      return false;
+  }
+  for (const ShellBlock& b : model.shell_blocks) {
+    seen.assign(model.node_count(), 0);
+    if (!block_is_independent<4>(b, model.node_count(), seen))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace plyform::core

@@ -14,6 +14,7 @@
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "mass.hpp"
+#include "plyform/core/invariant.hpp"
 #include "plyform/engine/thread_governor.hpp"
 
 namespace plyform::engine {
@@ -93,6 +94,8 @@ RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& o
   omp_set_num_threads(std::max(1, options.threads));
 #endif
   ThreadGovernor governor(options.threads);
+  PLYFORM_INVARIANT(core::colouring_is_independent(model),
+                    "no two elements of a colour share a node (setup::build colours the blocks)");
   const auto wall_start = std::chrono::steady_clock::now();
   const auto wall = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

@@ -213,4 +213,46 @@ TEST(ContactSet, CoulombFrictionOpposesSliding) {
   }
 }
 
+// The stick slip stays on the surface when the surface turns. One cycle of sticking slip along
+// kU, then the whole scene (master and slave) turned rigidly by 1 rad about y through the
+// segment's centre, nothing moving relative to anything: the friction force must be the same
+// stick force turned with the scene, k slip along -R kU. The turn takes the normal to within
+// 4 degrees of -x, where the node's tangent axes switch from the x-based to the y-based pair;
+// the stored slip written in the old axes would then act along kW, a quarter turn off.
+TEST(ContactSet, StickSlipTurnsWithTheSurface) {
+  const double ks = 800.0, km = 500.0, depth = 2e-3, mu = 0.2, xi = 0.3, eta = -0.45;
+  const double k = std::min(ks, km), fn = k * depth, speed = 0.1, slip = kDt * speed;
+  Scene s(xi, eta, depth, ks, km, 1, mu);
+  s.set_velocity(4, V3{speed * kU[0], speed * kU[1], speed * kU[2]});
+  const int threads0 = omp_get_max_threads();
+  omp_set_num_threads(1);
+  contact::ContactSet cs(s.model, s.mass, nullptr, 1e-4, 0.9);
+  cs.start(s.packed.data());
+  cs.apply(kDt, kDt, s.packed.data(), nullptr, s.fx.data(), s.fy.data(), s.fz.data());
+  const V3 f1{fn * kN[0] - k * slip * kU[0], fn * kN[1] - k * slip * kU[1],
+              fn * kN[2] - k * slip * kU[2]};
+  expect_near(s.force(4), f1, 1e-12, "first cycle");
+  // The turn: x' = c + R (x - c), R about y by `turn` (taking kN towards -x).
+  const double turn = -1.0, co = std::cos(turn), si = std::sin(turn);
+  const auto rotate = [&](const V3& v) {
+    return V3{co * v[0] + si * v[2], v[1], -si * v[0] + co * v[2]};
+  };
+  for (std::size_t i = 0; i < 5; ++i) {
+    double* p = &s.packed[6 * i];
+    const V3 r = rotate(V3{p[0] - kCentre[0], p[1] - kCentre[1], p[2] - kCentre[2]});
+    for (std::size_t d = 0; d < 3; ++d) {
+      p[d] = kCentre[d] + r[d];
+      p[3 + d] = 0.0;
+    }
+    s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
+  }
+  const V3 n2 = rotate(kN), u2 = rotate(kU);
+  ASSERT_GT(std::fabs(n2[0]), 0.995);  // past the switch of the tangent axes
+  cs.apply(2.0 * kDt, kDt, s.packed.data(), nullptr, s.fx.data(), s.fy.data(), s.fz.data());
+  omp_set_num_threads(threads0);
+  const V3 f2{fn * n2[0] - k * slip * u2[0], fn * n2[1] - k * slip * u2[1],
+              fn * n2[2] - k * slip * u2[2]};
+  expect_near(s.force(4), f2, 1e-9, "after the turn");
+}
+
 }  // namespace

@@ -182,4 +182,10 @@ struct Model {
 /// colouring supports (128 colours).
 bool colour_element_blocks(Model& model);
 
+/// Whether every block's colouring holds: its colour ranges cover the block in order, its node
+/// indices are in range, and no two elements of a colour share a node (what lets a colour's
+/// elements add their forces to the nodes in parallel). Checked at the start of a run in the
+/// builds that check invariants (invariant.hpp).
+[[nodiscard]] bool colouring_is_independent(const Model& model);
+
 }  // namespace plyform::core
