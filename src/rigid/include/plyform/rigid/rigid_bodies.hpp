@@ -72,7 +72,8 @@ struct NodalArrays {
   const double* ux = nullptr;  ///< displacements at t_{n+1} from Model::x0/y0/z0 [length]
   const double* uy = nullptr;
   const double* uz = nullptr;
-  double* vx = nullptr;  ///< out: velocities of the rigid nodes for [t_{n+1}, t_{n+2}] [m/s]
+  double* vx =
+      nullptr;  ///< out: velocities of the rigid nodes for [t_{n+1}, t_{n+2}] [length/time]
   double* vy = nullptr;
   double* vz = nullptr;
   double* wx = nullptr;  ///< out, optional (null: not written): angular velocities [rad/s]
