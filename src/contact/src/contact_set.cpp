@@ -110,6 +110,7 @@ struct PassRuntime {
   // the tilt), which an explicit run cannot survive under forming pressures.
   std::vector<double> master_normal;       // 3 per master node
   std::vector<double> seg_normal;          // 3 per segment, current
+  bool seg_normal_current = false;         // seg_normal updated for this cycle's positions
   std::vector<signed char> corner_sign;    // per segment corner: its nodal normal against it
   std::vector<signed char> node_seg_sign;  // per node_seg entry: the same sign
   // The slave nodes' normals, the same way from the faces around them (none for a node set's
@@ -365,6 +366,17 @@ inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side,
   r[0] = o * d[0], r[1] = o * d[1], r[2] = o * d[2];
 }
 
+// Segment s's unit normal at this cycle's positions: the one update_master_normals() computed
+// (the same numbers), or computed here when the pass keeps none.
+inline const double* current_segment_normal(const PassRuntime& pr, core::Index s,
+                                            const double* packed, double* scratch) {
+  const auto su = static_cast<std::size_t>(s);
+  if (pr.seg_normal_current)
+    return &pr.seg_normal[3 * su];
+  segment_normal(&pr.pass->segments[4 * su], packed, scratch);
+  return scratch;
+}
+
 // Projects slave k, on `side` of segment s, on the segment's offset surface. The slave's
 // surface point is the node moved by its offset o_s towards the master along its nodal normal
 // (geometry, like the master's), so that the point lies on the layer's face: a node going
@@ -387,8 +399,9 @@ void project_surface(const PassRuntime& pr, std::size_t k, core::Index s, const 
     if (towards != nullptr) {
       nc[0] = towards[0], nc[1] = towards[1], nc[2] = towards[2];
     } else {
-      segment_normal(q, packed, nc);
-      nc[0] *= L.side, nc[1] *= L.side, nc[2] *= L.side;
+      double scratch[3];
+      const double* ns = current_segment_normal(pr, s, packed, scratch);
+      nc[0] = L.side * ns[0], nc[1] = L.side * ns[1], nc[2] = L.side * ns[2];
     }
     const double sg = dir[0] * nc[0] + dir[1] * nc[1] + dir[2] * nc[2] < 0.0 ? os : -os;
     L.rs[0] = sg * dir[0], L.rs[1] = sg * dir[1], L.rs[2] = sg * dir[2];
@@ -441,8 +454,8 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
     // oriented alike (a tool mesh from several patches): on another segment than last cycle's,
     // the side is the one last cycle's contact normal is on.
     if (s != pr.seg[k]) {
-      double ns[3];
-      segment_normal(q, packed, ns);
+      double scratch[3];
+      const double* ns = current_segment_normal(pr, s, packed, scratch);
       const double* fr = &pr.frame[9 * k];
       L.side = fr[0] * ns[0] + fr[1] * ns[1] + fr[2] * ns[2] < 0.0 ? -1 : 1;
     }
@@ -456,8 +469,8 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
     return L;
   }
   // No segment last cycle: the side of the mid plane (through the centroid) the node is on.
-  double ns[3];
-  segment_normal(q, packed, ns);
+  double scratch[3];
+  const double* ns = current_segment_normal(pr, s, packed, scratch);
   const double* p = at(packed, cp.slave_nodes[k]);
   double dm = 0.0;
   const int nn = q[2] == q[3] ? 3 : 4;
@@ -762,7 +775,8 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   const core::ContactPass& cp = *pr.pass;
   const std::size_t ns = cp.slave_count();
   const law::BatchHistory& h = pr.hist;
-  if (pr.master_offsets && dt > 0.0)
+  pr.seg_normal_current = pr.master_offsets && dt > 0.0;
+  if (pr.seg_normal_current)
     update_master_normals(pr, packed);
   if (!cp.slave_face_start.empty() && dt > 0.0)
     update_slave_normals(pr, packed);
