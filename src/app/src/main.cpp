@@ -18,6 +18,15 @@ int main(int argc, char** argv) {
   auto* run_out =
       run_cmd->add_option("-o,--output", run_output, "results folder (default: <deck stem>_out)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  run_cmd->add_flag("--restart", run.restart,
+                    "continue from the checkpoint in OUTDIR (OUTDIR/d3dump: "
+                    "*DATABASE_BINARY_D3DUMP, or written when a run was stopped by a signal)");
+  double end_time = 0.0;
+  auto* end_opt = run_cmd
+                      ->add_option("--end-time", end_time,
+                                   "termination time in place of the deck's ENDTIM (a restart "
+                                   "may go on past it)")
+                      ->check(CLI::PositiveNumber);
 
   std::filesystem::path check_deck;
   CLI::App* check = app.add_subcommand("check", "Read and validate a deck; print a summary");
@@ -49,6 +58,8 @@ int main(int argc, char** argv) {
   if (run_cmd->parsed()) {
     if (*run_out)
       run.output = run_output;
+    if (*end_opt)
+      run.end_time = end_time;
     return plyform::app::run_deck(run, std::cout, std::cerr);
   }
   if (check->parsed())

@@ -8,21 +8,55 @@
 
 namespace plyform::app {
 
+namespace {
+
+// The file names of save_state's records.
+constexpr const char* kGlstat = "glstat.csv";
+constexpr const char* kNodout = "nodout.csv";
+constexpr const char* kRbdout = "rbdout.csv";
+constexpr const char* kBndout = "bndout.csv";
+constexpr const char* kRcforc = "rcforc.csv";
+constexpr const char* kInterfaceEnergy = "interface_energy.csv";
+constexpr const char* kCohesive = "cohesive.csv";
+
+}  // namespace
+
 ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path& outdir,
-                           std::ostream& terminal, bool show_progress)
+                           std::ostream& terminal, bool show_progress,
+                           const core::StateArchive::Records* resume)
     : model_(model), series_(outdir), progress_(terminal, show_progress) {
+  std::optional<core::StateArchive> archive;
+  if (resume != nullptr)
+    archive.emplace(core::StateArchive::for_loading(*resume));
+  std::optional<core::StateArchive::Scope> scope;
+  if (archive)
+    scope.emplace(*archive, "outputs");
+  // How far the file had been written at the checkpoint (none: a new file).
+  const auto at = [&](const char* file) -> std::optional<std::uint64_t> {
+    if (!archive)
+      return std::nullopt;
+    std::uint64_t bytes = 0;
+    archive->value(file, bytes);
+    return bytes;
+  };
+  if (archive) {
+    std::vector<double> times;
+    archive->array("states", times);
+    series_.resume(times);
+  }
   if (model.output.glstat_dt > 0.0)
-    glstat_.emplace(outdir / output::glstat_file_name);
+    glstat_.emplace(outdir / output::glstat_file_name, at(kGlstat));
   if (model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty()) {
-    nodout_.emplace(outdir / output::nodout_file_name);
+    nodout_.emplace(outdir / output::nodout_file_name, at(kNodout));
   }
   bool rigid = false;
   for (const auto& m : model.materials)
     rigid = rigid || std::holds_alternative<core::RigidMaterial>(m);
   if (rigid && model.output.glstat_dt > 0.0) {
-    rbdout_.emplace(outdir / "rbdout.csv",
+    rbdout_.emplace(outdir / kRbdout,
                     std::vector<std::string>{"time", "part", "fx", "fy", "fz", "mx", "my", "mz",
-                                             "x", "y", "z", "vx", "vy", "vz"});
+                                             "x", "y", "z", "vx", "vy", "vz"},
+                    at(kRbdout));
   }
   if (model.output.bndout_dt > 0.0 && !model.motions.empty()) {
     for (const core::PrescribedMotion& p : model.motions)
@@ -30,20 +64,21 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
     std::sort(bndout_nodes_.begin(), bndout_nodes_.end());
     bndout_nodes_.erase(std::unique(bndout_nodes_.begin(), bndout_nodes_.end()),
                         bndout_nodes_.end());
-    bndout_.emplace(outdir / "bndout.csv",
-                    std::vector<std::string>{"time", "node", "fx", "fy", "fz"});
+    bndout_.emplace(outdir / kBndout, std::vector<std::string>{"time", "node", "fx", "fy", "fz"},
+                    at(kBndout));
   }
   if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
-    rcforc_.emplace(outdir / output::rcforc_file_name);
+    rcforc_.emplace(outdir / output::rcforc_file_name, at(kRcforc));
     interface_energy_.emplace(
-        outdir / "interface_energy.csv",
+        outdir / kInterfaceEnergy,
         std::vector<std::string>{"time", "interface", "work", "stored", "damage", "viscous",
-                                 "friction", "damping", "healing", "in_contact", "bonded"});
+                                 "friction", "damping", "healing", "in_contact", "bonded"},
+        at(kInterfaceEnergy));
   }
   for (const core::ContactInterface& c : model.contacts)
     cohesive_model_ = cohesive_model_ || c.cohesive;
   if (cohesive_model_ && model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty())
-    cohesive_.emplace(outdir / output::cohesive_file_name);
+    cohesive_.emplace(outdir / output::cohesive_file_name, at(kCohesive));
   node_ids_.assign(model.node_id.begin(), model.node_id.end());
   for (const core::SolidBlock& b : model.solid_blocks) {
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -268,6 +303,29 @@ void ResultWriter::nodout(const engine::Snapshot& s) {
 
 void ResultWriter::progress(double time, double end_time, long cycle, double dt, double wall) {
   progress_.update(time, end_time, cycle, dt, wall);
+}
+
+void ResultWriter::save_state(core::StateArchive& archive) {
+  std::vector<double> times = series_.times();
+  archive.array("states", times);
+  const auto put = [&](const char* file, const output::CsvHistory& csv) {
+    std::uint64_t bytes = csv.bytes_written();
+    archive.value(file, bytes);
+  };
+  if (glstat_)
+    put(kGlstat, glstat_->csv());
+  if (nodout_)
+    put(kNodout, nodout_->csv());
+  if (rbdout_)
+    put(kRbdout, *rbdout_);
+  if (bndout_)
+    put(kBndout, *bndout_);
+  if (rcforc_)
+    put(kRcforc, rcforc_->csv());
+  if (interface_energy_)
+    put(kInterfaceEnergy, *interface_energy_);
+  if (cohesive_)
+    put(kCohesive, cohesive_->csv());
 }
 
 void ResultWriter::finish() {

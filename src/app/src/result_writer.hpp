@@ -19,8 +19,11 @@ namespace plyform::app {
 
 class ResultWriter : public engine::OutputSink {
  public:
+  /// `resume`: a checkpoint's records (a restart): the files go on from where they were when
+  /// it was written (what came after is cut off) instead of starting afresh.
   ResultWriter(const core::Model& model, const std::filesystem::path& outdir,
-               std::ostream& terminal, bool show_progress);
+               std::ostream& terminal, bool show_progress,
+               const core::StateArchive::Records* resume = nullptr);
 
   void state(const engine::Snapshot& s) override;
   void glstat(const engine::Energies& e) override;
@@ -30,6 +33,7 @@ class ResultWriter : public engine::OutputSink {
   void boundary_forces(const engine::Snapshot& s) override;
   void contact_forces(double time,
                       const std::vector<contact::InterfaceReport>& interfaces) override;
+  void save_state(core::StateArchive& archive) override;
   void finish();
 
   [[nodiscard]] std::size_t states_written() const { return series_.states_written(); }

@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <csignal>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <ostream>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/engine/checkpoint_file.hpp"
 #include "plyform/engine/solver.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/output/progress_line.hpp"
@@ -18,6 +21,35 @@
 
 namespace plyform::app {
 namespace {
+
+// SIGINT and SIGTERM ask the run to stop after its cycle with a checkpoint. The first one
+// restores the default action, so that a second one ends the process at once.
+volatile std::sig_atomic_t stop_requested = 0;
+
+extern "C" void request_stop(int signal) {
+  stop_requested = 1;
+  std::signal(signal, SIG_DFL);
+}
+
+// Installs request_stop for the lifetime of a run; the previous handlers come back after it.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    stop_requested = 0;
+    int_ = std::signal(SIGINT, request_stop);
+    term_ = std::signal(SIGTERM, request_stop);
+  }
+  ~StopOnSignals() {
+    std::signal(SIGINT, int_);
+    std::signal(SIGTERM, term_);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  void (*int_)(int) = SIG_DFL;
+  void (*term_)(int) = SIG_DFL;
+};
 
 bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
   for (const auto& d : errors)
@@ -43,10 +75,20 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::filesystem::path outdir =
       options.output ? *options.output
                      : std::filesystem::current_path() / (options.deck.stem().string() + "_out");
+  const std::filesystem::path checkpoint = outdir / engine::checkpoint_file_name;
+  std::optional<core::StateArchive::Records> resume;
+  if (options.restart) {
+    try {
+      resume = engine::read_checkpoint(checkpoint, read.model.source_fingerprint);
+    } catch (const engine::CheckpointError& e) {
+      fmt::print(err, "error: cannot restart: {}\n", e.what());
+      return 1;
+    }
+  }
   output::RunSummary summary;
   summary.deck = options.deck.string();
   summary.version = "0.1.0";
-  summary.end_time = model.controls.end_time;
+  summary.end_time = options.end_time ? *options.end_time : model.controls.end_time;
   summary.nodes = static_cast<long>(model.node_count());
   summary.elements = static_cast<long>(model.solid_count() + model.shell_count());
   summary.deformable_elements = static_cast<long>(model.deformable_element_count());
@@ -54,18 +96,38 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   engine::RunResult result;
   try {
     std::filesystem::create_directories(outdir);
-    ResultWriter writer(model, outdir, std::cout, options.progress && output::stdout_is_terminal());
+    ResultWriter writer(model, outdir, std::cout, options.progress && output::stdout_is_terminal(),
+                        resume ? &*resume : nullptr);
     engine::SolverOptions so;
     so.threads = options.threads;
-    result = engine::run(model, writer, so);
+    so.end_time = options.end_time;
+    so.checkpoint = checkpoint;
+    so.checkpoint_cycles = model.output.d3dump_cycles;
+    so.fingerprint = read.model.source_fingerprint;
+    so.stop = &stop_requested;
+    const StopOnSignals signals;
+    engine::Simulation simulation(model, writer, so);
+    if (resume) {
+      simulation.restore(*resume);
+      resume.reset();  // the records are in the state now
+    }
+    result = simulation.run();
     writer.finish();
+  } catch (const core::StateError& e) {
+    fmt::print(err, "error: cannot restart: {}\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(err, "error: {}\n", e.what());
     summary.status = std::string("error: ") + e.what();
     output::write_summary_json(outdir / "summary.json", summary);
     return 2;
   }
-  summary.status = result.ok ? "normal termination" : "error: " + result.error;
+  summary.status = !result.ok       ? "error: " + result.error
+                   : result.stopped ? fmt::format("stopped by a signal at t = {:.6g}", result.time)
+                                    : "normal termination";
+  if (result.restarted)
+    summary.restarted_at = result.restart_time;
+  summary.checkpoint = result.checkpoint;
   summary.cycles = result.cycles;
   summary.final_time = result.time;
   summary.wall_seconds = result.wall_seconds;
@@ -112,10 +174,26 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     fmt::print(out, "mass scaling added {:.6g} ({:.3g} % of {:.6g})\n", result.added_mass,
                100.0 * summary.added_mass_ratio, result.physical_mass);
   }
+  if (result.restarted) {
+    fmt::print(out, "restarted from the checkpoint of t = {:.6g} (cycle {})\n", result.restart_time,
+               result.restart_cycle);
+  }
+  if (result.checkpoints > 0) {
+    fmt::print(out, "checkpoint{}: {} written, the last in {}\n",
+               result.checkpoints == 1 ? "" : "s", result.checkpoints, result.checkpoint);
+  }
   fmt::print(out, "results in {}\n", outdir.string());
   if (!result.ok) {
     fmt::print(err, "error: {}\n", result.error);
     return 3;
+  }
+  if (result.stopped) {
+    fmt::print(err,
+               "stopped by a signal at t = {:.6g} (cycle {}); checkpoint {}; continue with: "
+               "plyform run {} -o {} --restart\n",
+               result.time, result.cycles, result.checkpoint, options.deck.string(),
+               outdir.string());
+    return 4;
   }
   return 0;
 }

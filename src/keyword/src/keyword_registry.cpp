@@ -63,6 +63,7 @@ KeywordSpec control_shell_keyword();
 KeywordSpec control_contact_keyword();
 KeywordSpec control_units_keyword();
 KeywordSpec database_binary_d3plot_keyword();
+KeywordSpec database_binary_d3dump_keyword();
 KeywordSpec database_glstat_keyword();
 KeywordSpec database_nodout_keyword();
 KeywordSpec database_rcforc_keyword();
@@ -127,6 +128,7 @@ std::span<const KeywordSpec> keyword_registry() {
       control_contact_keyword(),
       control_units_keyword(),
       database_binary_d3plot_keyword(),
+      database_binary_d3dump_keyword(),
       database_glstat_keyword(),
       database_nodout_keyword(),
       database_rcforc_keyword(),

@@ -81,6 +81,10 @@ void ReaderSession::read_file(const fs::path& path, const std::string& display_n
 void ReaderSession::read_text(std::string_view text, const std::string& display_name,
                               const fs::path& folder, const fs::path& canonical) {
   model().files_read.push_back(display_name);
+  for (const char c : text) {
+    model().source_fingerprint ^= static_cast<unsigned char>(c);
+    model().source_fingerprint *= 1099511628211ull;
+  }
   open_files_.push_back({canonical, display_name});
   const DeckBlocks deck = split_into_blocks(text);
   for (const DataLine& line : deck.before_first_keyword) {

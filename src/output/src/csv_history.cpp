@@ -42,6 +42,48 @@ CsvHistory::CsvHistory(std::filesystem::path file, std::vector<std::string> colu
   flush();
 }
 
+CsvHistory::CsvHistory(std::filesystem::path file, std::vector<std::string> columns,
+                       std::optional<std::uint64_t> resume_at)
+    : CsvHistory(resume_at ? CsvHistory(std::move(file), std::move(columns), *resume_at, 0)
+                           : CsvHistory(std::move(file), std::move(columns))) {}
+
+CsvHistory::CsvHistory(std::filesystem::path file, std::vector<std::string> columns,
+                       std::uint64_t resume_at, int /*tag*/)
+    : path_(std::move(file)), columns_(std::move(columns)) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path_, ec);
+  if (ec || size < resume_at) {
+    throw std::runtime_error(fmt::format(
+        "cannot go on with {}: it has {} bytes, the checkpoint counts {} (was it removed or "
+        "cut since?)",
+        path_.string(), ec ? 0 : size, resume_at));
+  }
+  {
+    // The header must be this file's (the same columns).
+    std::FILE* f = std::fopen(path_.c_str(), "rb");
+    if (f == nullptr)
+      io_error("cannot open", path_);
+    std::string head;
+    for (int c = std::fgetc(f); c != EOF && c != '\n'; c = std::fgetc(f))
+      head += static_cast<char>(c);
+    std::fclose(f);
+    std::string expected;
+    for (const std::string& column : columns_)
+      expected += (expected.empty() ? "" : ",") + column;
+    if (head != expected) {
+      throw std::runtime_error(fmt::format("cannot go on with {}: its header is '{}', not '{}'",
+                                           path_.string(), head, expected));
+    }
+  }
+  std::filesystem::resize_file(path_, resume_at, ec);
+  if (ec)
+    throw std::runtime_error("cannot cut " + path_.string() + ": " + ec.message());
+  file_.reset(std::fopen(path_.c_str(), "ab"));
+  if (!file_)
+    io_error("cannot open", path_);
+  written_ = resume_at;
+}
+
 CsvHistory::CsvHistory(CsvHistory&&) noexcept = default;
 CsvHistory& CsvHistory::operator=(CsvHistory&&) noexcept = default;
 
@@ -107,6 +149,7 @@ void CsvHistory::flush() {
     if (std::fwrite(line_.data(), 1, complete_, file_.get()) != complete_) {
       io_error("cannot write", path_);
     }
+    written_ += complete_;
     line_.erase(0, complete_);
     complete_ = 0;
   }
@@ -158,8 +201,8 @@ void CsvHistory::row_mixed(std::span<const CsvCell> cells) {
 
 // ---- Typed history files -------------------------------------------------------------------
 
-GlstatFile::GlstatFile(std::filesystem::path file)
-    : csv_(std::move(file), to_strings(glstat_columns)) {}
+GlstatFile::GlstatFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at)
+    : csv_(std::move(file), to_strings(glstat_columns), resume_at) {}
 
 void GlstatFile::write(const GlstatRow& r) {
   const double values[] = {r.time,          r.dt,        r.kinetic,
@@ -168,8 +211,8 @@ void GlstatFile::write(const GlstatRow& r) {
   csv_.row(values);
 }
 
-NodoutFile::NodoutFile(std::filesystem::path file)
-    : csv_(std::move(file), to_strings(nodout_columns)) {}
+NodoutFile::NodoutFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at)
+    : csv_(std::move(file), to_strings(nodout_columns), resume_at) {}
 
 void NodoutFile::write(std::span<const NodoutRow> rows) {
   for (const NodoutRow& r : rows) {
@@ -183,8 +226,8 @@ void NodoutFile::write(std::span<const NodoutRow> rows) {
   csv_.flush();
 }
 
-RcforcFile::RcforcFile(std::filesystem::path file)
-    : csv_(std::move(file), to_strings(rcforc_columns)) {}
+RcforcFile::RcforcFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at)
+    : csv_(std::move(file), to_strings(rcforc_columns), resume_at) {}
 
 void RcforcFile::write(std::span<const RcforcRow> rows) {
   for (const RcforcRow& r : rows) {
@@ -198,8 +241,8 @@ void RcforcFile::write(std::span<const RcforcRow> rows) {
   csv_.flush();
 }
 
-CohesiveFile::CohesiveFile(std::filesystem::path file)
-    : csv_(std::move(file), to_strings(cohesive_columns)) {}
+CohesiveFile::CohesiveFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at)
+    : csv_(std::move(file), to_strings(cohesive_columns), resume_at) {}
 
 void CohesiveFile::write(std::span<const CohesiveRow> rows) {
   for (const CohesiveRow& r : rows) {

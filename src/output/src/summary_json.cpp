@@ -149,6 +149,8 @@ std::string summary_json_text(const RunSummary& s) {
   integer("elements", s.elements);
   integer("deformable_elements", s.deformable_elements);
   integer("threads", s.threads);
+  real("restarted_at", s.restarted_at);
+  text("checkpoint", s.checkpoint);
   key("warnings");
   if (s.warnings.empty()) {
     out += "[]\n";

@@ -150,6 +150,10 @@ void validate_piece(const GridPiece& piece) {
   check_ids(piece.cell_ids, n_cells, "cell");
 }
 
+std::string VtuSeries::file_name_of(std::size_t k) {
+  return fmt::format("results_{:04d}.vtu", k);
+}
+
 VtuSeries::VtuSeries(std::filesystem::path outdir) : outdir_(std::move(outdir)) {
   std::error_code ec;
   std::filesystem::create_directories(outdir_, ec);
@@ -221,7 +225,7 @@ void VtuSeries::write_state(double time, const GridPiece& piece) {
       "  <AppendedData encoding=\"raw\">\n"
       "   _";
 
-  const std::string file_name = fmt::format("results_{:04d}.vtu", states_.size());
+  const std::string file_name = file_name_of(states_.size());
   {
     detail::AtomicFile vtu(outdir_ / file_name);
     vtu.write(header_);
@@ -233,27 +237,46 @@ void VtuSeries::write_state(double time, const GridPiece& piece) {
     vtu.commit();
   }
 
+  states_.emplace_back(time, file_name);
+  try {
+    write_pvd();
+  } catch (...) {
+    states_.pop_back();
+    throw;
+  }
+}
+
+void VtuSeries::write_pvd() const {
   std::string pvd;
   fmt::format_to(std::back_inserter(pvd),
                  "<?xml version=\"1.0\"?>\n"
                  "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"{}\">\n"
                  "  <Collection>\n",
                  byte_order);
-  const auto dataset = [&pvd](double t, std::string_view file) {
+  for (const auto& [t, file] : states_) {
     fmt::format_to(std::back_inserter(pvd),
                    "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"", t);
     append_xml_escaped(pvd, file);
     pvd += "\"/>\n";
-  };
-  for (const auto& [t, file] : states_) {
-    dataset(t, file);
   }
-  dataset(time, file_name);
   pvd += "  </Collection>\n</VTKFile>\n";
   detail::AtomicFile pvd_file(pvd_path());
   pvd_file.write(pvd);
   pvd_file.commit();
-  states_.emplace_back(time, file_name);
+}
+
+void VtuSeries::resume(std::span<const double> times) {
+  states_.clear();
+  for (std::size_t k = 0; k < times.size(); ++k)
+    states_.emplace_back(times[k], file_name_of(k));
+  write_pvd();
+}
+
+std::vector<double> VtuSeries::times() const {
+  std::vector<double> t;
+  for (const auto& st : states_)
+    t.push_back(st.first);
+  return t;
 }
 
 }  // namespace plyform::output

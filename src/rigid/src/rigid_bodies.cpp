@@ -479,4 +479,28 @@ double RigidBodies::kinetic_energy() const {
   return e;
 }
 
+void RigidBodies::visit_state(core::StateArchive& archive) {
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    const auto scope = archive.scope("body/" + std::to_string(bodies_[k].part_id));
+    Body& b = bodies_[k];
+    archive.value("centre", b.xc);
+    archive.value("orientation", b.q);
+    archive.value("velocity", b.v);
+    archive.value("angular_momentum", b.l);
+    archive.value("omega", b.w);
+    archive.value("velocity_old", b.v_old);
+    archive.value("angular_momentum_old", b.l_old);
+    archive.value("omega_old", b.w_old);
+    archive.value("centre_at_t", b.xc_t);
+    archive.value("angle", b.angle);
+    archive.value("force", b.force);
+    archive.value("moment", b.moment);
+    archive.value("load_force", b.load_force);
+    archive.value("load_moment", b.load_moment);
+    archive.value("reaction", b.reaction);
+    archive.value("reaction_moment", b.reaction_moment);
+  }
+  archive.value("w_interp", w_interp_);
+}
+
 }  // namespace plyform::rigid

@@ -424,6 +424,8 @@ struct Builder {
       m.output.d3plot_dt =
           d.d3plot->npltc > 0 ? m.controls.end_time / d.d3plot->npltc : d.d3plot->dt;
     }
+    if (d.d3dump)
+      m.output.d3dump_cycles = d.d3dump->cycles;
     for (const model::DatabaseAsciiDesc& a : d.ascii_outputs) {
       if (a.name == "GLSTAT")
         m.output.glstat_dt = a.dt;

@@ -279,6 +279,8 @@ TEST(SummaryJson, ExpectedText) {
   "elements": 800,
   "deformable_elements": 700,
   "threads": 2,
+  "restarted_at": null,
+  "checkpoint": "",
   "warnings": [
     "line one\nline \"two\"",
     "tab\there, back\\slash, bell\u0007"

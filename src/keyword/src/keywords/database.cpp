@@ -89,6 +89,52 @@ void read_d3plot(KeywordInput& in) {
   in.model().d3plot = d;
 }
 
+// --- *DATABASE_BINARY_D3DUMP
+constexpr std::array kD3dumpFields{
+    FieldSpec{.name = "CYCL",
+              .type = FieldType::kInteger,
+              .min_value = 1,
+              .unit = "-",
+              .description = "cycles between checkpoints",
+              .required = true},
+    FieldSpec{.name = "NR",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "number of checkpoint files kept: must be 0 (plyform keeps one, "
+                             "replaced atomically)"},
+    FieldSpec{
+        .name = "BEAM", .type = FieldType::kInteger, .unit = "-", .description = "kept as written"},
+    FieldSpec{.name = "NPLTC",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "must be 0 (the interval is CYCL)"},
+    FieldSpec{.name = "PSETID",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "must be 0 (a checkpoint holds the whole model)"},
+};
+constexpr std::array kD3dumpCards{
+    CardSpec{.title = "Card 1", .fields = kD3dumpFields, .presence = "required"},
+};
+
+void read_d3dump(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (CYCL NR BEAM NPLTC PSETID)");
+  }
+  const CardValues v = in.read(kD3dumpCards[0], *line);
+  require_zero(in, line->line, "NR", v.integer("NR"), "more than one checkpoint file");
+  require_zero(in, line->line, "NPLTC", v.integer("NPLTC"), "a number of checkpoints");
+  require_zero(in, line->line, "PSETID", v.integer("PSETID"), "a checkpoint of some parts");
+  if (in.model().d3dump) {
+    in.warn(in.keyword().line, "",
+            fmt::format("*DATABASE_BINARY_D3DUMP given again: this one replaces the one at {}:{}",
+                        in.model().d3dump->where.file, in.model().d3dump->where.line));
+  }
+  in.model().d3dump =
+      model::DatabaseBinaryD3dumpDesc{.cycles = v.integer("CYCL"), .where = in.where(line->line)};
+}
+
 // --- *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_RCFORC
 constexpr std::array kAsciiFields{
     FieldSpec{.name = "DT",
@@ -209,6 +255,17 @@ KeywordSpec database_binary_d3plot_keyword() {
           .summary =
               "The interval of full states (results_NNNN.vtu). Given twice, the last "
               "one is used (with a warning)."};
+}
+
+KeywordSpec database_binary_d3dump_keyword() {
+  return {.name = "DATABASE_BINARY_D3DUMP",
+          .options = kNoOptions,
+          .handler = read_d3dump,
+          .cards = kD3dumpCards,
+          .summary =
+              "Checkpoints: OUTDIR/d3dump every CYCL cycles and at the end of the run, for "
+              "`plyform run DECK -o OUTDIR --restart` (written atomically; a run stopped by "
+              "SIGINT or SIGTERM writes one too)."};
 }
 
 KeywordSpec database_glstat_keyword() {

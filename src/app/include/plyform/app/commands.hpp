@@ -23,11 +23,15 @@ struct RunOptions {
   std::filesystem::path deck;
   std::optional<std::filesystem::path> output;  ///< none: <deck stem>_out in the current folder
   int threads = 1;
-  bool progress = true;  ///< a progress line when standard output is a terminal
+  bool progress = true;            ///< a progress line when standard output is a terminal
+  bool restart = false;            ///< continue from OUTDIR/d3dump
+  std::optional<double> end_time;  ///< replaces the deck's ENDTIM
 };
 
-/// `plyform run DECK.k [-o OUTDIR] [--threads N]`: 0 normal termination, 1 deck errors,
-/// 2 output errors, 3 the run stopped (instability), with the results written so far.
+/// `plyform run DECK.k [-o OUTDIR] [--threads N] [--restart] [--end-time T]`: 0 normal
+/// termination, 1 deck errors or a checkpoint refused (--restart), 2 output errors, 3 the run
+/// stopped (instability) with the results written so far, 4 stopped by SIGINT or SIGTERM
+/// after writing a checkpoint (continue with --restart).
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 /// `plyform check DECK.k`

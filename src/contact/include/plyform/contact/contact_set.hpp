@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "plyform/core/model.hpp"
+#include "plyform/core/state_archive.hpp"
 #include "plyform/law/node_state.hpp"
 
 namespace plyform::contact {
@@ -107,6 +108,10 @@ class ContactSet {
   [[nodiscard]] std::size_t slave_count() const;
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }
+  /// Saves or restores what the passes carry from cycle to cycle (checkpoints): each slave
+  /// node's law history, segment, shape functions, frame, slip and forces, the candidate lists
+  /// of the last search and the positions it was made at, the energy books.
+  void visit_state(core::StateArchive& archive);
   /// Things the user should know (initial penetrations, ...), set by start().
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
 

@@ -139,6 +139,7 @@ struct OutputRequests {
   double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
   double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
+  long d3dump_cycles = 0;            ///< *DATABASE_BINARY_D3DUMP CYCL (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
 };
 

@@ -3,11 +3,17 @@
 // deformation, boundary conditions, energies, output on schedule. It sees only the runtime
 // model (flat arrays, local indices) and reports through an OutputSink.
 
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "plyform/contact/contact_set.hpp"
 #include "plyform/core/model.hpp"
+#include "plyform/core/state_archive.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
@@ -58,12 +64,26 @@ class OutputSink {
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
+  /// Saves what the sink needs to go on after a restart (how far each file was written), into
+  /// a checkpoint. Restoring is the sink owner's business (it opens the files).
+  virtual void save_state(core::StateArchive& /*archive*/) {}
 };
 
 struct SolverOptions {
   int threads = 1;
   /// Stop when dt < this fraction of the first step (DTMIN of *CONTROL_TERMINATION overrides).
   double dt_floor_ratio = 1e-4;
+  /// Replaces the deck's termination time (`--end-time`: a restart may run past it).
+  std::optional<double> end_time;
+  /// Checkpoints (*DATABASE_BINARY_D3DUMP, restart): the file (empty: none is written), every
+  /// how many cycles (0: only when stopped, and at the end when > 0), and the deck's
+  /// fingerprint written into it.
+  std::filesystem::path checkpoint;
+  long checkpoint_cycles = 0;
+  std::uint64_t fingerprint = 0;
+  /// Set (non-zero) by a signal handler: the run finishes its cycle and the outputs due, writes
+  /// a checkpoint and stops (RunResult::stopped).
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 struct RunResult {
@@ -84,6 +104,44 @@ struct RunResult {
   /// and the wall seconds it ran so.
   int thread_reductions = 0;
   double reduced_thread_seconds = 0.0;
+  /// Stopped on request (SolverOptions::stop) before the end time; a checkpoint was written.
+  bool stopped = false;
+  int checkpoints = 0;     ///< checkpoints written by this run
+  std::string checkpoint;  ///< the last one's file (empty: none)
+  bool restarted = false;  ///< continued from a checkpoint (Simulation::restore)
+  double restart_time = 0.0;
+  long restart_cycle = 0;
+};
+
+/// The run of one model. It owns the whole state of the run (simulation.cpp, `State`):
+/// nodal fields, element block states, rigid bodies, contact passes with their laws' histories,
+/// the integrator's scalars, the energy books and the output clocks. A cycle is a short list of
+/// named passes (positions, internal forces, loads and temperatures, contact, step vote,
+/// velocities and constraints, then outputs); the state saves to and restores from flat
+/// records (checkpoints).
+class Simulation {
+ public:
+  /// Sets the run up at t = 0 (mass, rigid bodies, contact, the first element pass and the
+  /// first half step); failures are reported by run().
+  Simulation(const core::Model& model, OutputSink& sink, const SolverOptions& options);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Takes the state of a checkpoint (the records save() gave, read back) in place of the one
+  /// set up at t = 0; run() then continues from there without writing the outputs of t = 0.
+  /// Throws core::StateError when the records do not fit this model.
+  void restore(const core::StateArchive::Records& records);
+
+  /// Runs to the end time, the first instability or a stop request.
+  RunResult run();
+
+  /// The run's state as checkpoint records (the sink's under "outputs/").
+  core::StateArchive::Records save();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 /// Runs the model to its termination time (or the first instability) and returns what

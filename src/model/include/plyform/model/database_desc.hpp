@@ -17,6 +17,12 @@ struct DatabaseBinaryD3plotDesc {
   SourceLocation where;
 };
 
+/// *DATABASE_BINARY_D3DUMP: checkpoints (OUTDIR/d3dump) every CYCL cycles and at the end.
+struct DatabaseBinaryD3dumpDesc {
+  int cycles = 0;  ///< CYCL: cycles between checkpoints (> 0)
+  SourceLocation where;
+};
+
 /// *DATABASE_GLSTAT / *DATABASE_NODOUT: an ASCII history file's interval.
 struct DatabaseAsciiDesc {
   std::string name;  ///< "GLSTAT", "NODOUT" or "RCFORC"

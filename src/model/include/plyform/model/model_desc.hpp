@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,10 +81,14 @@ struct ModelDesc {
   std::optional<ControlShellDesc> control_shell;
   std::optional<ControlUnitsDesc> units;
   std::optional<DatabaseBinaryD3plotDesc> d3plot;
+  std::optional<DatabaseBinaryD3dumpDesc> d3dump;
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
   std::vector<DatabaseHistoryNodeDesc> history_nodes;
 
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened
+  /// FNV-1a (64 bit) over the text of every file read, in reading order: a checkpoint belongs
+  /// to the deck whose files give the same value.
+  std::uint64_t source_fingerprint = 14695981039346656037ull;
 };
 
 }  // namespace plyform::model

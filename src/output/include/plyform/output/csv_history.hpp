@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,6 +29,12 @@ class CsvHistory {
   /// Creates (truncates) `file` and writes the header line; throws std::runtime_error naming
   /// the file on failure, std::invalid_argument when `columns` is empty.
   CsvHistory(std::filesystem::path file, std::vector<std::string> columns);
+  /// Goes on with `file` as it was after its first `resume_at` bytes (a restart: what a run
+  /// wrote after its checkpoint is cut off). With no value, as the constructor above. Throws
+  /// std::runtime_error naming the file when it is missing, shorter than that, or has another
+  /// header line.
+  CsvHistory(std::filesystem::path file, std::vector<std::string> columns,
+             std::optional<std::uint64_t> resume_at);
   CsvHistory(CsvHistory&&) noexcept;
   CsvHistory& operator=(CsvHistory&&) noexcept;
   ~CsvHistory();
@@ -53,12 +60,16 @@ class CsvHistory {
 
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
   [[nodiscard]] const std::vector<std::string>& columns() const { return columns_; }
+  /// Bytes in the file after the last flush (header included).
+  [[nodiscard]] std::uint64_t bytes_written() const { return written_; }
 
  private:
   struct Closer {
     void operator()(std::FILE* f) const;
   };
   void separator();
+  CsvHistory(std::filesystem::path file, std::vector<std::string> columns, std::uint64_t resume_at,
+             int tag);
 
   std::filesystem::path path_;
   std::vector<std::string> columns_;
@@ -66,6 +77,7 @@ class CsvHistory {
   std::string line_;          ///< pending text, written at flush()
   std::size_t complete_ = 0;  ///< length of line_ holding complete rows
   std::size_t cells_ = 0;     ///< cells in the current row
+  std::uint64_t written_ = 0;
 };
 
 // ---- The history files of product.md ------------------------------------------------------
@@ -132,7 +144,7 @@ struct CohesiveRow {
 /// glstat.csv: one row per output time.
 class GlstatFile {
  public:
-  explicit GlstatFile(std::filesystem::path file);
+  explicit GlstatFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at = {});
   void write(const GlstatRow& row);
   [[nodiscard]] const CsvHistory& csv() const { return csv_; }
 
@@ -143,7 +155,7 @@ class GlstatFile {
 /// nodout.csv: the rows of all history nodes of one output time, flushed together.
 class NodoutFile {
  public:
-  explicit NodoutFile(std::filesystem::path file);
+  explicit NodoutFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at = {});
   void write(std::span<const NodoutRow> rows);
   [[nodiscard]] const CsvHistory& csv() const { return csv_; }
 
@@ -154,7 +166,7 @@ class NodoutFile {
 /// rcforc.csv: the rows of all interfaces of one output time, flushed together.
 class RcforcFile {
  public:
-  explicit RcforcFile(std::filesystem::path file);
+  explicit RcforcFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at = {});
   void write(std::span<const RcforcRow> rows);
   [[nodiscard]] const CsvHistory& csv() const { return csv_; }
 
@@ -165,7 +177,7 @@ class RcforcFile {
 /// cohesive.csv: the rows of all cohesive history nodes of one output time, flushed together.
 class CohesiveFile {
  public:
-  explicit CohesiveFile(std::filesystem::path file);
+  explicit CohesiveFile(std::filesystem::path file, std::optional<std::uint64_t> resume_at = {});
   void write(std::span<const CohesiveRow> rows);
   [[nodiscard]] const CsvHistory& csv() const { return csv_; }
 

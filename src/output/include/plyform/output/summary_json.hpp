@@ -2,6 +2,7 @@
 // OUTDIR/summary.json: the outcome of a run in one small JSON object, written atomically.
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +28,10 @@ struct RunSummary {
   long elements = 0;             ///< solids and shells, rigid parts' included
   long deformable_elements = 0;  ///< what element_cycles_per_second counts
   int threads = 1;
+  /// A restart: the time it continued from (NaN, written null: the run started at t = 0). The
+  /// other fields cover the whole run, its parts before the restart included.
+  double restarted_at = std::numeric_limits<double>::quiet_NaN();
+  std::string checkpoint;  ///< the last checkpoint written (empty: none)
   std::vector<std::string> warnings;
 };
 

@@ -61,11 +61,21 @@ class VtuSeries {
   /// std::runtime_error naming the file on I/O failure; then nothing is added to the series.
   void write_state(double time, const GridPiece& piece);
 
+  /// A restart: the series is the first `times.size()` states of the run it continues
+  /// (results_0000.vtu ... as written then); rewrites results.pvd with them, and the next state
+  /// takes the next number (a later state of the interrupted run is overwritten).
+  void resume(std::span<const double> times);
+  /// The times of the states in the series, in order.
+  [[nodiscard]] std::vector<double> times() const;
+
   [[nodiscard]] std::size_t states_written() const { return states_.size(); }
   [[nodiscard]] const std::filesystem::path& outdir() const { return outdir_; }
   [[nodiscard]] std::filesystem::path pvd_path() const { return outdir_ / "results.pvd"; }
 
  private:
+  static std::string file_name_of(std::size_t k);
+  void write_pvd() const;
+
   std::filesystem::path outdir_;
   std::vector<std::pair<double, std::string>> states_;  ///< time, file name
   std::vector<double> points_;                          ///< interleaved coordinates (reused)

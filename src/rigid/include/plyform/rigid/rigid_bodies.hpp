@@ -49,6 +49,7 @@
 
 #include "plyform/core/load_curve.hpp"
 #include "plyform/core/model.hpp"
+#include "plyform/core/state_archive.hpp"
 #include "plyform/rigid/mass_properties.hpp"
 
 namespace plyform::rigid {
@@ -130,6 +131,9 @@ class RigidBodies {
   [[nodiscard]] std::vector<BodyReport> report() const;
   /// Kinetic energy of the bodies at t_{n+1}: m V.V / 2 + Omega.L / 2 [energy].
   [[nodiscard]] double kinetic_energy() const;
+  /// Saves or restores the bodies' motion (checkpoints): centre, orientation, momenta, the
+  /// accumulated angles and the last resultants, per body.
+  void visit_state(core::StateArchive& archive);
 
  private:
   struct Motion {

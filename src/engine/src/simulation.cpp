@@ -1,0 +1,1107 @@
+// engine::Simulation: the state of a run and the passes of its cycle.
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <variant>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "boundary_conditions.hpp"
+#include "deterministic_sum.hpp"
+#include "mass.hpp"
+#include "plyform/core/invariant.hpp"
+#include "plyform/engine/checkpoint_file.hpp"
+#include "plyform/engine/solver.hpp"
+#include "plyform/engine/thread_governor.hpp"
+
+namespace plyform::engine {
+namespace {
+
+// A range of elements of one colour of one block: the unit of parallel work in the element
+// loop. Items of one phase (block, colour) share no node and run in parallel; phases run in
+// order, so each node sums its forces in the same order for any number of threads.
+struct WorkItem {
+  bool shell;  ///< a shell block (else a solid block)
+  std::size_t block, begin, end;
+};
+
+template <class Block>
+void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,
+                std::vector<std::vector<WorkItem>>& phases) {
+  constexpr std::size_t kItem = 64;  // small enough to balance two threads on a colour
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    // Rigid parts move with their body: no internal forces, no stable step.
+    if (std::holds_alternative<core::RigidMaterial>(
+            model.materials[static_cast<std::size_t>(blocks[b].material)])) {
+      continue;
+    }
+    const std::vector<std::size_t>& start = blocks[b].colour_start;
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+      std::vector<WorkItem> phase;
+      for (std::size_t e = start[c]; e < start[c + 1]; e += kItem) {
+        phase.push_back({shell, b, e, std::min(start[c + 1], e + kItem)});
+      }
+      if (!phase.empty())
+        phases.push_back(std::move(phase));
+    }
+  }
+}
+
+std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
+  std::vector<std::vector<WorkItem>> phases;
+  add_phases(model, model.solid_blocks, false, phases);
+  add_phases(model, model.shell_blocks, true, phases);
+  return phases;
+}
+
+struct InternalResult {
+  double dt_min = 1e300;
+  WorkItem dt_item{};
+  std::size_t dt_element = 0;
+  double hourglass = 0.0;
+  double internal = 0.0;  ///< stress work of the cycle, from the elements' stresses
+  bool failed = false;
+  bool unsupported_material = false;  ///< failed: a kernel had no law for the material
+  WorkItem failed_item{};
+  std::size_t failed_element = 0;
+};
+
+// What one work item reports (solid or shell kernel).
+struct ItemResult {
+  double dt_min = 1e300;
+  std::size_t dt_element = 0;
+  double hourglass_energy = 0.0;
+  double internal_energy = 0.0;
+  bool failed = false;
+  bool unsupported_material = false;
+  std::size_t failed_element = 0;
+};
+
+std::string time_text(double t) {
+  std::ostringstream os;
+  os.precision(6);
+  os << t;
+  return os.str();
+}
+
+bool all_blocks_coloured(const core::Model& model) {
+  const auto coloured = [](const auto& b) {
+    return !b.colour_start.empty() && b.colour_start.back() == b.size();
+  };
+  return std::all_of(model.solid_blocks.begin(), model.solid_blocks.end(), coloured) &&
+         std::all_of(model.shell_blocks.begin(), model.shell_blocks.end(), coloured);
+}
+
+}  // namespace
+
+// The whole state of a run. What changes from cycle to cycle is listed in visit_state (the
+// checkpoint); the rest is set up once from the model at t = 0 (mass, work items, constraint
+// lists) or is scratch of one pass. A new nodal field goes into NodalState (and visit_state),
+// a new pass into cycle().
+struct Simulation::State {
+  State(const core::Model& m, OutputSink& out, const SolverOptions& o)
+      : model(m), sink(out), options(o), governor(o.threads), bc(m) {}
+
+  // ---- Set up once --------------------------------------------------------------------------
+  const core::Model& model;
+  OutputSink& sink;
+  SolverOptions options;
+  ThreadGovernor governor;
+  std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
+  const BoundaryConditions bc;
+  std::size_t n = 0;
+  std::vector<double> inv_mass, inv_inertia;
+  std::vector<std::vector<WorkItem>> phases;
+  std::vector<std::size_t> phase_offset;
+  std::size_t element_count = 0;  // the elements the cycle integrates (not a rigid tool's)
+  bool has_rigid = false;
+  bool rotations = false;   // some node has rotary inertia (shells)
+  bool fixed_step = false;  // no deformable element: DTINIT is the step
+  double tssfac = 0.9;
+  double end_time = 0.0;
+  double eps_t = 0.0;  // tolerance of the output and end times
+  std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
+  std::vector<double> contact_inertia;
+  bool set_up = false;  // the set-up at t = 0 succeeded (else res says why)
+
+  // ---- State ---------------------------------------------------------------------------------
+  NodalState s;
+  // Packed copy of x, y, z, vx, vy, vz per node for the element gathers (one cache line).
+  std::vector<double> packed;
+  element::NodalView view{};
+  std::vector<element::SolidBlockState> solids;
+  std::vector<element::ShellBlockState> shells;
+  std::optional<rigid::RigidBodies> rigid_bodies;
+  std::optional<contact::ContactSet> contact;
+  // Velocities v_{n+1/2} of the last velocity update, and w such that
+  // v_{n+1} = old + (v - old) w (outputs and kinetic energy at t_{n+1}).
+  std::vector<double> old_x, old_y, old_z, old_wx, old_wy, old_wz;
+  double w_full = 0.0;
+  double t = 0.0;
+  long cycle = 0;
+  double dt = 0.0;
+  double dt_floor = 0.0;
+  // Energy books: the trapezoidal work of the step to come (first half, known once v_{n+3/2}
+  // is), the initial kinetic energy, accumulated hourglass and stress work and external work,
+  // per block stress work and hourglass energy (the warnings name the part).
+  double pending_external = 0.0;
+  double kinetic0 = 0.0;
+  double hourglass = 0.0;
+  double internal_energy = 0.0;
+  double work_external = 0.0;
+  std::vector<std::array<double, 2>> shell_books, solid_books;
+  Energies en;
+  bool warned_hourglass = false, warned_contact = false;
+  // Output clocks.
+  double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
+  double next_bndout = 0.0;
+  bool state_written = false;
+  double wall_before = 0.0;  // wall seconds of the runs before a restart
+  int reductions_before = 0;
+  double reduced_before = 0.0;
+  RunResult res;
+
+  // ---- Scratch of one pass -------------------------------------------------------------------
+  std::vector<ItemResult> item_results;
+  InternalResult ir;
+  double bad_velocities = 0.0;
+  std::vector<std::array<double, 3>> free_velocity;
+  std::vector<double> saved_f;
+  std::vector<double> rfx, rfy, rfz;
+  std::vector<std::array<double, 3>> rigid_free;
+
+  void set_up_run();
+  void visit_state(core::StateArchive& a);
+
+  // The passes of a cycle, in order.
+  void positions();
+  bool internal_forces();
+  void loads_and_temperatures();
+  void contact_forces();
+  bool step_vote(double& dt_next);
+  bool velocities(double dt_next);
+  bool cycle_once();
+
+  // Their parts and helpers.
+  void pack();
+  void internal(double dt_step);
+  double advance_velocity(double t_now, double dt_prev, double dt_next, double dt_avg);
+  void fix_rotations();
+  void sync();
+  double kinetic();
+  [[nodiscard]] double stable_step(const InternalResult& x) const {
+    return fixed_step ? model.controls.dt_init : tssfac * x.dt_min;
+  }
+  [[nodiscard]] double vote(const InternalResult& x) const {
+    return contact ? std::min(stable_step(x), contact->stable_step()) : stable_step(x);
+  }
+  const Energies& energies();
+  void check_books(const Energies& e);
+  void write_outputs(bool last);
+  void write_checkpoint();
+  [[nodiscard]] Snapshot snapshot() const;
+  void fail(const std::string& why);
+  [[nodiscard]] std::string element_name(const WorkItem& it, std::size_t e) const;
+  [[nodiscard]] std::string failure_text(const InternalResult& r) const;
+  [[nodiscard]] double wall() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  }
+};
+
+void Simulation::State::set_up_run() {
+  PLYFORM_INVARIANT(core::colouring_is_independent(model),
+                    "no two elements of a colour share a node (setup::build colours the blocks)");
+  n = model.node_count();
+  s.resize(n);
+  s.x = model.x0;
+  s.y = model.y0;
+  s.z = model.z0;
+  if (!model.v0x.empty()) {
+    s.vx = model.v0x;
+    s.vy = model.v0y;
+    s.vz = model.v0z;
+  }
+  if (!model.temperature0.empty())
+    s.temperature = model.temperature0;
+  if (!model.w0x.empty()) {
+    s.wx = model.w0x;
+    s.wy = model.w0y;
+    s.wz = model.w0z;
+  }
+  packed.assign(6 * n, 0.0);
+  view = element::NodalView{s.x.data(),      s.y.data(),      s.z.data(),
+                            model.x0.data(), model.y0.data(), model.z0.data(),
+                            s.vx.data(),     s.vy.data(),     s.vz.data()};
+  view.packed = packed.data();
+  solids.resize(model.solid_blocks.size());
+  for (std::size_t b = 0; b < solids.size(); ++b)
+    solids[b].resize(model.solid_blocks[b]);
+  shells.resize(model.shell_blocks.size());
+  for (std::size_t b = 0; b < shells.size(); ++b)
+    shells[b].resize(model.shell_blocks[b]);
+
+  const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
+  res.physical_mass = mass.physical;
+  res.added_mass = mass.added;
+  inv_mass.assign(n, 0.0);
+  inv_inertia.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.inertia[i] > 0.0)
+      inv_inertia[i] = 1.0 / s.inertia[i];
+  }
+  // Rigid bodies: their nodes move with the body (src/rigid), which needs the nodal forces.
+  try {
+    rigid_bodies.emplace(model);
+  } catch (const std::exception& e) {
+    res.ok = false;
+    res.error = e.what();
+    return;
+  }
+  has_rigid = !rigid_bodies->empty();
+  const std::vector<core::Index>& rigid_nodes = rigid_bodies->rigid_nodes();
+  const std::vector<unsigned char>& is_rigid = rigid_bodies->is_rigid_node();
+  rfx.assign(has_rigid ? n : 0, 0.0);
+  rfy.assign(has_rigid ? n : 0, 0.0);
+  rfz.assign(has_rigid ? n : 0, 0.0);
+  rigid_free.resize(rigid_nodes.size());
+  // Rigid nodes turn with their body: the rotation pass must not move them.
+  for (core::Index ri : rigid_nodes)
+    inv_inertia[static_cast<std::size_t>(ri)] = 0.0;
+  std::size_t massless = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.mass[i] > 0.0) {
+      inv_mass[i] = 1.0 / s.mass[i];
+    } else if (!has_rigid || !is_rigid[i]) {
+      ++massless;
+    }
+  }
+  if (massless > 0) {
+    res.warnings.push_back(std::to_string(massless) +
+                           " nodes belong to no element: they carry no mass and do not move");
+  }
+  if (!all_blocks_coloured(model)) {
+    res.ok = false;
+    res.error = "internal error: element blocks must be coloured (core::colour_element_blocks)";
+    return;
+  }
+  phases = make_phases(model);
+  phase_offset.assign(phases.size() + 1, 0);
+  for (std::size_t p = 0; p < phases.size(); ++p)
+    phase_offset[p + 1] = phase_offset[p] + phases[p].size();
+  item_results.resize(phase_offset.back());
+  element_count = model.deformable_element_count();
+  shell_books.assign(model.shell_blocks.size(), {0.0, 0.0});
+  solid_books.assign(model.solid_blocks.size(), {0.0, 0.0});
+  free_velocity.resize(bc.constrained_nodes().size());
+  contact_inertia.assign(model.contacts.empty() ? 0 : n, 0.0);
+
+  pack();
+  internal(0.0);
+  if (ir.failed) {
+    fail(failure_text(ir) + " in the initial mesh");
+    return;
+  }
+  tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
+  // Without deformable elements (rigid bodies only) nothing bounds the step: DTINIT sets it.
+  fixed_step = !(ir.dt_min < 1e300);
+  if (fixed_step && !(model.controls.dt_init > 0.0)) {
+    res.ok = false;
+    res.error =
+        "the model has no deformable element to set the time step: give DTINIT in "
+        "*CONTROL_TIMESTEP";
+    return;
+  }
+  dt = stable_step(ir);
+  // Contact interfaces: built once the masses and the elements' first step are known (SOFT = 1
+  // stiffness, the contact's step vote).
+  if (!model.contacts.empty()) {
+    contact.emplace(model, s.mass, has_rigid ? is_rigid.data() : nullptr, stable_step(ir), tssfac);
+    std::vector<const double*> thickness;  // every shell, across the blocks in order
+    for (const element::ShellBlockState& b : shells)
+      for (const double& v : b.thickness)
+        thickness.push_back(&v);
+    contact->follow_shell_thickness(std::move(thickness));
+    // Rotary inertia where the contact may turn a node: not at rigid nodes (their body takes
+    // forces only).
+    for (std::size_t i = 0; i < n; ++i)
+      contact_inertia[i] = has_rigid && is_rigid[i] ? 0.0 : s.inertia[i];
+    contact->follow_rotations({s.wx.data(), s.wy.data(), s.wz.data(), s.mx.data(), s.my.data(),
+                               s.mz.data(), contact_inertia.data()});
+    contact->start(packed.data());
+    for (const std::string& w : contact->warnings())
+      res.warnings.push_back(w);
+    dt = std::min(dt, contact->stable_step());
+  }
+  if (model.controls.dt_init > 0.0)
+    dt = std::min(dt, model.controls.dt_init);
+  end_time = options.end_time ? *options.end_time : model.controls.end_time;
+  if (end_time > 0.0)
+    dt = std::min(dt, end_time);
+  res.dt_first = dt;
+  const double floor_ratio =
+      model.controls.dt_min_ratio > 0.0 ? model.controls.dt_min_ratio : options.dt_floor_ratio;
+  dt_floor = floor_ratio * dt;
+
+  bc.loads(0.0, s);
+  old_x.assign(n, 0.0);
+  old_y.assign(n, 0.0);
+  old_z.assign(n, 0.0);
+  saved_f.assign(3 * bc.constrained_nodes().size(), 0.0);
+  rotations = std::any_of(s.inertia.begin(), s.inertia.end(), [](double v) { return v > 0.0; });
+  old_wx.assign(rotations ? n : 0, 0.0);
+  old_wy.assign(rotations ? n : 0, 0.0);
+  old_wz.assign(rotations ? n : 0, 0.0);
+  for (const core::FixedDofs& f : model.fixed) {
+    if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
+      fixed_rotations.push_back({f.node, f.dofs});
+  }
+  // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
+  advance_velocity(0.0, 0.0, dt, 0.5 * dt);
+  fix_rotations();
+  kinetic0 = kinetic();
+  eps_t = 1e-9 * std::max(end_time, dt);
+  set_up = true;
+}
+
+void Simulation::State::pack() {
+#pragma omp parallel for schedule(static) proc_bind(close)
+  for (long li = 0; li < static_cast<long>(n); ++li) {
+    const auto i = static_cast<std::size_t>(li);
+    double* p = &packed[6 * i];
+    p[0] = s.x[i];
+    p[1] = s.y[i];
+    p[2] = s.z[i];
+    p[3] = s.vx[i];
+    p[4] = s.vy[i];
+    p[5] = s.vz[i];
+  }
+}
+
+// Element forces at the current positions into `ir`; the nodal force arrays must be zero and
+// the packed copy current (the positions and velocity passes see to both).
+void Simulation::State::internal(double dt_step) {
+  const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
+  const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
+  const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
+#pragma omp parallel proc_bind(close)
+  {
+    for (std::size_t p = 0; p < phases.size(); ++p) {
+      const std::vector<WorkItem>& phase = phases[p];
+#pragma omp for schedule(dynamic, 2)
+      for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
+        const WorkItem& it = phase[static_cast<std::size_t>(w)];
+        ItemResult& out = item_results[phase_offset[p] + static_cast<std::size_t>(w)];
+        if (it.shell) {
+          const core::ShellBlock& blk = model.shell_blocks[it.block];
+          const element::ShellResult x = element::shell_forces(
+              blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view,
+              spin, dt_step, it.begin, it.end, forces, moments);
+          out = {x.dt_min, x.dt_element,           x.hourglass_energy, x.internal_energy,
+                 x.failed, x.unsupported_material, x.failed_element};
+        } else {
+          const core::SolidBlock& blk = model.solid_blocks[it.block];
+          const element::SolidResult x =
+              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                                    solids[it.block], view, dt_step, it.begin, it.end, forces);
+          out = {x.dt_min, x.dt_element,           x.hourglass_energy, x.internal_energy,
+                 x.failed, x.unsupported_material, x.failed_element};
+        }
+      }
+    }
+  }
+  InternalResult r;
+  for (std::size_t p = 0; p < phases.size(); ++p) {  // in order: deterministic
+    for (std::size_t w = 0; w < phases[p].size(); ++w) {
+      const ItemResult& x = item_results[phase_offset[p] + w];
+      if (x.failed && !r.failed) {
+        r.failed = true;
+        r.unsupported_material = x.unsupported_material;
+        r.failed_item = phases[p][w];
+        r.failed_element = x.failed_element;
+      }
+      if (x.dt_min < r.dt_min) {
+        r.dt_min = x.dt_min;
+        r.dt_item = phases[p][w];
+        r.dt_element = x.dt_element;
+      }
+      r.hourglass += x.hourglass_energy;
+      r.internal += x.internal_energy;
+      const WorkItem& it = phases[p][w];
+      std::array<double, 2>& books = it.shell ? shell_books[it.block] : solid_books[it.block];
+      books[0] += x.internal_energy;
+      books[1] += x.hourglass_energy;
+    }
+  }
+  ir = r;
+}
+
+std::string Simulation::State::element_name(const WorkItem& it, std::size_t e) const {
+  const auto name = [&](const auto& blk, const char* kind) {
+    return std::string(kind) + " element " + std::to_string(blk.element_id[e]) + " (part " +
+           std::to_string(model.parts[static_cast<std::size_t>(blk.part)].id) + ")";
+  };
+  return it.shell ? name(model.shell_blocks[it.block], "shell")
+                  : name(model.solid_blocks[it.block], "solid");
+}
+
+// Why the element loop stopped: a collapsed element, or (an internal error: setup admits only
+// the laws each kernel has) a material the kernel has no law for.
+std::string Simulation::State::failure_text(const InternalResult& r) const {
+  const std::string where = element_name(r.failed_item, r.failed_element);
+  if (r.unsupported_material) {
+    return "the " + std::string(r.failed_item.shell ? "shell" : "solid") +
+           " kernel has no law for the material of " + where +
+           " (an internal error: setup should have refused the part)";
+  }
+  return (r.failed_item.shell ? "zero area or thickness, or non-finite geometry, in "
+                              : "non-positive volume in ") +
+         where;
+}
+
+Snapshot Simulation::State::snapshot() const {
+  Snapshot x{t, cycle, &model, &s, &solids, &shells, &*rigid_bodies, nullptr};
+  x.contact = contact ? &*contact : nullptr;
+  return x;
+}
+
+void Simulation::State::fail(const std::string& why) {
+  res.ok = false;
+  res.error = why;
+  sink.state(snapshot());  // keep the last state for the diagnosis
+}
+
+// The node arrays that only outputs read are brought up to date on demand: positions
+// x = x0 + u and velocities at t_{n+1}. The hot passes then touch fewer arrays (each extra
+// stream costs, and many same-offset streams collide in the caches).
+void Simulation::State::sync() {
+#pragma omp parallel for schedule(static) proc_bind(close)
+  for (long li = 0; li < static_cast<long>(n); ++li) {
+    const auto i = static_cast<std::size_t>(li);
+    s.x[i] = model.x0[i] + s.ux[i];
+    s.y[i] = model.y0[i] + s.uy[i];
+    s.z[i] = model.z0[i] + s.uz[i];
+    s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w_full;
+    s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w_full;
+    s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w_full;
+  }
+  if (rotations) {
+#pragma omp parallel for schedule(static) proc_bind(close)
+    for (long li = 0; li < static_cast<long>(n); ++li) {
+      const auto i = static_cast<std::size_t>(li);
+      s.wnx[i] = old_wx[i] + (s.wx[i] - old_wx[i]) * w_full;
+      s.wny[i] = old_wy[i] + (s.wy[i] - old_wy[i]) * w_full;
+      s.wnz[i] = old_wz[i] + (s.wz[i] - old_wz[i]) * w_full;
+    }
+  }
+}
+
+// Velocity update v_{n+3/2} = v_{n+1/2} + a_{n+1} dt_avg in one pass over the nodes, which
+// also sums the work of the external forces at t_{n+1} over the step just taken (dt_prev,
+// second half of the trapezoid) and over the step to come (dt_next, first half), counts
+// non-finite velocities and zeroes the forces for the next element pass; then constraints and
+// reactions on the constrained nodes only, correcting their share of the sums. (The internal
+// energy is the elements' own book, not the work of their nodal forces.)
+// Returns the external work of the step just taken.
+double Simulation::State::advance_velocity(double t_now, double dt_prev, double dt_next,
+                                           double dt_avg) {
+  const std::vector<core::Index>& rigid_nodes = rigid_bodies->rigid_nodes();
+  const std::vector<unsigned char>& constrained = bc.constrained();
+  const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
+  const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
+  w_full = dt_prev / (2.0 * dt_avg);
+  for (core::Index ri : rigid_nodes) {  // the velocity pass zeroes the forces
+    const auto i = static_cast<std::size_t>(ri);
+    rfx[i] = s.fx[i];
+    rfy[i] = s.fy[i];
+    rfz[i] = s.fz[i];
+  }
+  for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+    const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+    saved_f[3 * k] = s.fx[i];
+    saved_f[3 * k + 1] = s.fy[i];
+    saved_f[3 * k + 2] = s.fz[i];
+  }
+  const auto sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
+    const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
+    const double fx = s.fx[i], fy = s.fy[i], fz = s.fz[i];
+    const double ex = s.ex[i], ey = s.ey[i], ez = s.ez[i];
+    const double h = inv_mass[i] * dt_avg;
+    const double nx = vx + (ex - fx) * h, ny = vy + (ey - fy) * h, nz = vz + (ez - fz) * h;
+    acc[0] += vx * ex + vy * ey + vz * ez;
+    acc[1] += nx * ex + ny * ey + nz * ez;
+    if (!std::isfinite(nx + ny + nz))
+      acc[2] += 1.0;
+    old_x[i] = vx;
+    old_y[i] = vy;
+    old_z[i] = vz;
+    s.vx[i] = nx;
+    s.vy[i] = ny;
+    s.vz[i] = nz;
+    s.fx[i] = s.fy[i] = s.fz[i] = 0.0;
+    if (rotations) {
+      // Rotations in the same pass (one pass over the nodes, one barrier less):
+      // w_{n+3/2} = w_{n+1/2} - I^-1 m dt_avg and the moments' work, as for the forces.
+      const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
+      const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
+      const double hr = inv_inertia[i] * dt_avg;
+      const double rx = wx - mx * hr, ry = wy - my * hr, rz = wz - mz * hr;
+      old_wx[i] = wx;
+      old_wy[i] = wy;
+      old_wz[i] = wz;
+      s.wx[i] = rx;
+      s.wy[i] = ry;
+      s.wz[i] = rz;
+      s.mx[i] = s.my[i] = s.mz[i] = 0.0;
+    }
+  });
+  bad_velocities = sums[2];
+  // Free velocities of the constrained nodes, before the constraints overwrite them.
+  std::vector<std::array<double, 3>>& free_v = free_velocity;
+  for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+    const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+    free_v[k] = {s.vx[i], s.vy[i], s.vz[i]};
+  }
+  bc.constrain(t_now, dt_next, dt_avg, old, s);
+  double prev_ext = 0.0, next_ext = 0.0;  // constrained nodes, in order
+  for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
+    const auto i = static_cast<std::size_t>(constrained_nodes[k]);
+    const unsigned char* c = &constrained[3 * i];
+    const double* f = &saved_f[3 * k];
+    const double e[3] = {s.ex[i], s.ey[i], s.ez[i]};
+    const double vo[3] = {old_x[i], old_y[i], old_z[i]};
+    const double vc[3] = {s.vx[i], s.vy[i], s.vz[i]};
+    double r[3];
+    for (int d = 0; d < 3; ++d) {
+      r[d] = c[d] ? s.mass[i] * (vc[d] - vo[d]) / dt_avg - (e[d] - f[d]) : 0.0;
+      prev_ext += vo[d] * r[d];
+      next_ext += vc[d] * r[d] + (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * e[d];
+    }
+    s.rx[i] = r[0];
+    s.ry[i] = r[1];
+    s.rz[i] = r[2];
+  }
+  if (has_rigid) {
+    // The bodies set their nodes' velocities; correct the next half's work at those nodes.
+    for (std::size_t k = 0; k < rigid_nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(rigid_nodes[k]);
+      rigid_free[k] = {s.vx[i], s.vy[i], s.vz[i]};
+    }
+    rigid::NodalArrays arrays;
+    arrays.fx = rfx.data();
+    arrays.fy = rfy.data();
+    arrays.fz = rfz.data();
+    arrays.ex = s.ex.data();
+    arrays.ey = s.ey.data();
+    arrays.ez = s.ez.data();
+    arrays.ux = s.ux.data();
+    arrays.uy = s.uy.data();
+    arrays.uz = s.uz.data();
+    arrays.vx = s.vx.data();
+    arrays.vy = s.vy.data();
+    arrays.vz = s.vz.data();
+    arrays.wx = s.wx.data();
+    arrays.wy = s.wy.data();
+    arrays.wz = s.wz.data();
+    rigid_bodies->advance({t_now, dt_prev, dt_next, dt_avg}, arrays);
+    for (std::size_t k = 0; k < rigid_nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(rigid_nodes[k]);
+      const double d[3] = {s.vx[i] - rigid_free[k][0], s.vy[i] - rigid_free[k][1],
+                           s.vz[i] - rigid_free[k][2]};
+      next_ext += d[0] * s.ex[i] + d[1] * s.ey[i] + d[2] * s.ez[i];
+    }
+    // Work of the bodies' prescribed motions and constraints (their reactions).
+    for (std::size_t k = 0; k < rigid_bodies->size(); ++k) {  // no allocation in the cycle
+      const rigid::RigidBodies::BodyReport b = rigid_bodies->report(k);
+      prev_ext += (b.reaction[0] * b.velocity[0] + b.reaction[1] * b.velocity[1] +
+                   b.reaction[2] * b.velocity[2] + b.reaction_moment[0] * b.omega[0] +
+                   b.reaction_moment[1] * b.omega[1] + b.reaction_moment[2] * b.omega[2]) *
+                  2.0 * dt_avg / std::max(dt_prev, 1e-300) * (dt_prev > 0.0 ? 1.0 : 0.0);
+    }
+  }
+  pending_external = 0.5 * dt_next * (sums[1] + next_ext);
+  return 0.5 * dt_prev * (sums[0] + prev_ext);
+}
+
+// Rotations (shell nodes): the velocity pass integrates them (w_{n+3/2} = w_{n+1/2} -
+// I^-1 m dt_avg); here fixed rotations are zeroed (their reaction moments do no work).
+void Simulation::State::fix_rotations() {
+  for (const auto& [node, dofs] : fixed_rotations) {
+    const auto i = static_cast<std::size_t>(node);
+    double* w[3] = {&s.wx[i], &s.wy[i], &s.wz[i]};
+    for (int d = 0; d < 3; ++d) {
+      if (dofs & (core::dof_rx << d))
+        *w[d] = 0.0;
+    }
+  }
+}
+
+double Simulation::State::kinetic() {
+  sync();
+  return 0.5 * deterministic_sum(
+                   n,
+                   [&](std::size_t i) {
+                     return s.mass[i] *
+                                (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]) +
+                            s.inertia[i] *
+                                (s.wnx[i] * s.wnx[i] + s.wny[i] * s.wny[i] + s.wnz[i] * s.wnz[i]);
+                   }) +
+         rigid_bodies->kinetic_energy();
+}
+
+const Energies& Simulation::State::energies() {
+  en.time = t;
+  en.dt = dt;
+  en.kinetic = kinetic();
+  en.hourglass = hourglass;
+  en.contact = contact ? contact->energy() : 0.0;
+  // From the elements' stresses, not the work of the nodal forces less the other books: a
+  // book that is wrong (a contact that feeds energy in, hourglass forces that do work they
+  // do not book) then shows in the total and the ratio.
+  en.internal = internal_energy;
+  en.external_work = work_external;
+  en.total = en.kinetic + en.internal + en.hourglass + en.contact;
+  const double reference = kinetic0 + work_external;
+  en.ratio = std::abs(reference) > 0.0 ? en.total / reference : 1.0;
+  return en;
+}
+
+// The books every run is checked against (once each, at the first output where it holds):
+// hourglass energy above 10 % of the internal energy, named by the part with the most; the
+// contact energy of an interface below zero (the contact gave energy to the model) beyond
+// 1e-3 of the energy that entered the model.
+void Simulation::State::check_books(const Energies& e) {
+  if (!warned_hourglass && e.hourglass > 0.1 * e.internal && e.hourglass > 0.0) {
+    warned_hourglass = true;
+    std::size_t worst = 0;
+    bool worst_shell = true;
+    double most = -1.0;
+    for (std::size_t b = 0; b < shell_books.size(); ++b)
+      if (shell_books[b][1] > most)
+        most = shell_books[b][1], worst = b, worst_shell = true;
+    for (std::size_t b = 0; b < solid_books.size(); ++b)
+      if (solid_books[b][1] > most)
+        most = solid_books[b][1], worst = b, worst_shell = false;
+    const auto& books = worst_shell ? shell_books[worst] : solid_books[worst];
+    const core::Index part =
+        worst_shell ? model.shell_blocks[worst].part : model.solid_blocks[worst].part;
+    std::ostringstream os;
+    os.precision(4);
+    os << "hourglass energy " << e.hourglass << " is "
+       << 100.0 * e.hourglass / std::max(e.internal, 1e-300) << " % of the internal energy "
+       << e.internal << " at t = " << e.time << ": most in part "
+       << model.parts[static_cast<std::size_t>(part)].id << " (hourglass " << books[1]
+       << ", internal " << books[0]
+       << "); its results are not to be trusted (a stiffness hourglass control, *HOURGLASS "
+          "IHQ 4 or 5, or a finer mesh)";
+    res.warnings.push_back(os.str());
+  }
+  if (!warned_contact && contact) {
+    const double reference = std::abs(kinetic0) + std::abs(e.external_work);
+    for (const contact::InterfaceReport& r : contact->report()) {
+      if (r.work < -1e-3 * reference) {
+        warned_contact = true;
+        std::ostringstream os;
+        os.precision(4);
+        os << "contact " << r.id << " energy " << r.work << " is negative at t = " << e.time
+           << ": the interface gave energy to the model (" << -100.0 * r.work / reference
+           << " % of the energy that entered it)";
+        res.warnings.push_back(os.str());
+        break;
+      }
+    }
+  }
+}
+
+void Simulation::State::write_outputs(bool last) {
+  const core::OutputRequests& out = model.output;
+  state_written = false;
+  const bool want_state = t + eps_t >= next_state || last;
+  const bool want_glstat = out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last);
+  const bool want_nodout =
+      out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last);
+  if (want_state || want_nodout)
+    sync();
+  if (want_state) {
+    sink.state(snapshot());
+    state_written = true;
+    if (out.d3plot_dt > 0.0) {
+      while (next_state <= t + eps_t)
+        next_state += out.d3plot_dt;
+    } else {
+      next_state = end_time;  // first and last only
+    }
+  }
+  if (want_glstat) {
+    sink.glstat(energies());
+    check_books(en);
+    if (has_rigid)
+      sink.rigid_bodies(t, *rigid_bodies);
+    while (next_glstat <= t + eps_t)
+      next_glstat += out.glstat_dt;
+  }
+  if (want_nodout) {
+    sink.nodout(snapshot());
+    while (next_nodout <= t + eps_t)
+      next_nodout += out.nodout_dt;
+  }
+  if (out.bndout_dt > 0.0 && (t + eps_t >= next_bndout || last)) {
+    sink.boundary_forces(snapshot());
+    while (next_bndout <= t + eps_t)
+      next_bndout += out.bndout_dt;
+  }
+  if (contact && out.rcforc_dt > 0.0 && (t + eps_t >= next_rcforc || last)) {
+    sink.contact_forces(t, contact->report());
+    while (next_rcforc <= t + eps_t)
+      next_rcforc += out.rcforc_dt;
+  }
+}
+
+// ---- The passes of a cycle ------------------------------------------------------------------
+
+// Positions at t_{n+1} and the packed copy the elements gather from.
+void Simulation::State::positions() {
+#pragma omp parallel for schedule(static) proc_bind(close)
+  for (long li = 0; li < static_cast<long>(n); ++li) {
+    const auto i = static_cast<std::size_t>(li);
+    const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
+    const double ux = s.ux[i] + vx * dt, uy = s.uy[i] + vy * dt, uz = s.uz[i] + vz * dt;
+    s.ux[i] = ux;
+    s.uy[i] = uy;
+    s.uz[i] = uz;
+    double* p = &packed[6 * i];
+    p[0] = model.x0[i] + ux;
+    p[1] = model.y0[i] + uy;
+    p[2] = model.z0[i] + uz;
+    p[3] = vx;
+    p[4] = vy;
+    p[5] = vz;
+  }
+}
+
+// Element stresses over the step and their forces at t_{n+1}, and the elements' energy books.
+bool Simulation::State::internal_forces() {
+  internal(dt);
+  if (ir.failed) {
+    sync();
+    fail(failure_text(ir) + " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+    return false;
+  }
+  hourglass += ir.hourglass;
+  internal_energy += ir.internal;
+  return true;
+}
+
+// External nodal loads and prescribed temperatures at t_{n+1}.
+void Simulation::State::loads_and_temperatures() {
+  bc.loads(t, s);
+  for (const core::TemperatureHistory& th : model.temperature_histories) {
+    if (t >= th.birth && t <= th.death) {
+      s.temperature[static_cast<std::size_t>(th.node)] =
+          th.curve >= 0 ? th.scale * model.curves[static_cast<std::size_t>(th.curve)](t) : th.scale;
+    }
+  }
+}
+
+void Simulation::State::contact_forces() {
+  if (contact) {
+    contact->apply(t, dt, packed.data(), s.temperature.data(), s.fx.data(), s.fy.data(),
+                   s.fz.data());
+  }
+}
+
+// The next step: the smallest vote of the elements and the contact, cut to land on the end
+// time; false (with the diagnosis) when it falls below the floor.
+bool Simulation::State::step_vote(double& dt_next) {
+  dt_next = vote(ir);
+  if (dt_next < dt_floor) {
+    sync();
+    const bool by_contact = contact && contact->stable_step() < stable_step(ir);
+    fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
+         " at t = " + time_text(t) + ", set by " +
+         (by_contact ? std::string("the contact stiffness")
+                     : element_name(ir.dt_item, ir.dt_element)));
+    return false;
+  }
+  if (end_time > 0.0 && t + dt_next > end_time)
+    dt_next = std::max(end_time - t, 1e-3 * dt_next);
+  return true;
+}
+
+// Velocities of the step to come, constraints, rigid bodies and the external work; false
+// (with the diagnosis) on a non-finite velocity.
+bool Simulation::State::velocities(double dt_next) {
+  work_external += advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
+  fix_rotations();
+  if (bad_velocities > 0.0) {
+    std::size_t bad = 0;
+    while (bad < n && std::isfinite(s.vx[bad] + s.vy[bad] + s.vz[bad]))
+      ++bad;
+    sync();
+    fail("non-finite velocity at node " + std::to_string(model.node_id[std::min(bad, n - 1)]) +
+         " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+    return false;
+  }
+  return true;
+}
+
+// One cycle, t_n -> t_{n+1}: the passes in order. False when the run failed (res says why).
+bool Simulation::State::cycle_once() {
+  work_external += pending_external;
+  positions();
+  t += dt;
+  ++cycle;
+  if (!internal_forces())
+    return false;
+  loads_and_temperatures();
+  contact_forces();
+  double dt_next = 0.0;
+  if (!step_vote(dt_next) || !velocities(dt_next))
+    return false;
+  res.dt_last = dt;
+  dt = dt_next;
+  return true;
+}
+
+// ---- State in and out -----------------------------------------------------------------------
+
+void Simulation::State::visit_state(core::StateArchive& a) {
+  {
+    const auto scope = a.scope("nodes");
+    for (auto [name, v] : {std::pair{"x", &s.x},
+                           {"y", &s.y},
+                           {"z", &s.z},
+                           {"ux", &s.ux},
+                           {"uy", &s.uy},
+                           {"uz", &s.uz},
+                           {"vx", &s.vx},
+                           {"vy", &s.vy},
+                           {"vz", &s.vz},
+                           {"vnx", &s.vnx},
+                           {"vny", &s.vny},
+                           {"vnz", &s.vnz},
+                           {"fx", &s.fx},
+                           {"fy", &s.fy},
+                           {"fz", &s.fz},
+                           {"ex", &s.ex},
+                           {"ey", &s.ey},
+                           {"ez", &s.ez},
+                           {"rx", &s.rx},
+                           {"ry", &s.ry},
+                           {"rz", &s.rz},
+                           {"wx", &s.wx},
+                           {"wy", &s.wy},
+                           {"wz", &s.wz},
+                           {"wnx", &s.wnx},
+                           {"wny", &s.wny},
+                           {"wnz", &s.wnz},
+                           {"mx", &s.mx},
+                           {"my", &s.my},
+                           {"mz", &s.mz},
+                           {"temperature", &s.temperature},
+                           {"old_x", &old_x},
+                           {"old_y", &old_y},
+                           {"old_z", &old_z},
+                           {"old_wx", &old_wx},
+                           {"old_wy", &old_wy},
+                           {"old_wz", &old_wz},
+                           {"packed", &packed}}) {
+      a.fixed(name, std::span<double>(*v));
+    }
+  }
+  for (std::size_t b = 0; b < solids.size(); ++b) {
+    const auto scope = a.scope("solid_block/" + std::to_string(b));
+    element::SolidBlockState& st = solids[b];
+    for (int k = 0; k < 6; ++k)
+      a.fixed("stress" + std::to_string(k), std::span<double>(st.s[k]));
+    a.fixed("plastic_strain", std::span<double>(st.eps_p));
+    a.fixed("hourglass", std::span<double>(st.hourglass));
+    a.fixed("volume", std::span<double>(st.volume));
+    a.fixed("dt_factor", std::span<double>(st.dt_factor));
+  }
+  for (std::size_t b = 0; b < shells.size(); ++b) {
+    const auto scope = a.scope("shell_block/" + std::to_string(b));
+    element::ShellBlockState& st = shells[b];
+    for (int k = 0; k < 5; ++k) {
+      a.fixed("stress" + std::to_string(k), std::span<double>(st.s[k]));
+      a.fixed("hourglass" + std::to_string(k), std::span<double>(st.hourglass[k]));
+    }
+    a.fixed("plastic_strain", std::span<double>(st.eps_p));
+    a.fixed("thickness", std::span<double>(st.thickness));
+    a.fixed("dt_factor", std::span<double>(st.dt_factor));
+    a.fixed("area", std::span<double>(st.area));
+  }
+  {
+    const auto scope = a.scope("integrator");
+    a.value("t", t);
+    a.value("cycle", cycle);
+    a.value("dt", dt);
+    a.value("dt_floor", dt_floor);
+    a.value("w_full", w_full);
+    a.value("dt_first", res.dt_first);
+    a.value("dt_last", res.dt_last);
+  }
+  {
+    const auto scope = a.scope("energy");
+    a.value("pending_external", pending_external);
+    a.value("kinetic0", kinetic0);
+    a.value("hourglass", hourglass);
+    a.value("internal", internal_energy);
+    a.value("external_work", work_external);
+    a.value("last", en);
+    a.fixed("shell_books", std::span<std::array<double, 2>>(shell_books));
+    a.fixed("solid_books", std::span<std::array<double, 2>>(solid_books));
+    a.value("warned_hourglass", warned_hourglass);
+    a.value("warned_contact", warned_contact);
+  }
+  {
+    const auto scope = a.scope("outputs_due");
+    a.value("state", next_state);
+    a.value("glstat", next_glstat);
+    a.value("nodout", next_nodout);
+    a.value("rcforc", next_rcforc);
+    a.value("bndout", next_bndout);
+    a.value("state_written", state_written);
+  }
+  {
+    const auto scope = a.scope("run");
+    double wall_now = wall_before + (a.saving() ? wall() : 0.0);
+    int reductions = reductions_before + (a.saving() ? governor.reductions() : 0);
+    double reduced = reduced_before + (a.saving() ? governor.reduced_seconds() : 0.0);
+    a.value("wall_seconds", wall_now);
+    a.value("thread_reductions", reductions);
+    a.value("reduced_thread_seconds", reduced);
+    a.strings("warnings", res.warnings);
+    if (!a.saving()) {
+      wall_before = wall_now;
+      reductions_before = reductions;
+      reduced_before = reduced;
+    }
+  }
+  if (has_rigid) {
+    const auto scope = a.scope("rigid");
+    rigid_bodies->visit_state(a);
+  }
+  if (contact) {
+    const auto scope = a.scope("contact");
+    contact->visit_state(a);
+  }
+}
+
+void Simulation::State::write_checkpoint() {
+  auto archive = core::StateArchive::for_saving();
+  {
+    const auto scope = archive.scope("engine");
+    visit_state(archive);
+  }
+  {
+    const auto scope = archive.scope("outputs");
+    sink.save_state(archive);
+  }
+  engine::write_checkpoint(options.checkpoint, options.fingerprint, archive.records());
+  ++res.checkpoints;
+  res.checkpoint = options.checkpoint.string();
+}
+
+// ---- Simulation -----------------------------------------------------------------------------
+
+Simulation::Simulation(const core::Model& model, OutputSink& sink, const SolverOptions& options)
+    : state_(std::make_unique<State>(model, sink, options)) {
+#ifdef _OPENMP
+  omp_set_num_threads(std::max(1, options.threads));
+#endif
+  state_->set_up_run();
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::restore(const core::StateArchive::Records& records) {
+  State& st = *state_;
+  if (!st.set_up)
+    return;  // run() reports why
+  auto archive = core::StateArchive::for_loading(records);
+  const auto scope = archive.scope("engine");
+  st.visit_state(archive);
+  st.res.restarted = true;
+  st.res.restart_time = st.t;
+  st.res.restart_cycle = st.cycle;
+  // The end time may have moved (--end-time): its tolerance with it.
+  st.eps_t = 1e-9 * std::max(st.end_time, st.dt);
+}
+
+core::StateArchive::Records Simulation::save() {
+  auto archive = core::StateArchive::for_saving();
+  {
+    const auto scope = archive.scope("engine");
+    state_->visit_state(archive);
+  }
+  {
+    const auto scope = archive.scope("outputs");
+    state_->sink.save_state(archive);
+  }
+  return archive.take_records();
+}
+
+RunResult Simulation::run() {
+  State& st = *state_;
+  RunResult& res = st.res;
+  if (!st.set_up)
+    return res;
+  const bool checkpoints = !st.options.checkpoint.empty();
+  if (!res.restarted)
+    st.write_outputs(false);
+  while (true) {
+    if (st.end_time > 0.0 && st.t + st.eps_t >= st.end_time)
+      break;
+    if (st.model.controls.end_cycle > 0 && st.cycle >= st.model.controls.end_cycle)
+      break;
+    if (!st.cycle_once())
+      break;
+    st.write_outputs(false);
+    st.sink.progress(st.t, st.end_time, st.cycle, st.dt, st.wall_before + st.wall());
+    st.governor.tick();
+    const bool stop = st.options.stop != nullptr && *st.options.stop != 0;
+    if (checkpoints && (stop || (st.options.checkpoint_cycles > 0 &&
+                                 st.cycle % st.options.checkpoint_cycles == 0))) {
+      st.write_checkpoint();
+    }
+    if (stop) {
+      res.stopped = true;
+      break;
+    }
+  }
+  if (res.ok && !res.stopped) {
+    if (!st.state_written)
+      st.write_outputs(true);
+    if (st.model.output.glstat_dt > 0.0 && st.en.time != st.t)
+      st.sink.glstat(st.energies());
+    // The end's checkpoint lets a restart go on past the end time (--end-time).
+    if (checkpoints && st.options.checkpoint_cycles > 0)
+      st.write_checkpoint();
+  }
+  res.cycles = st.cycle;
+  res.time = st.t;
+  res.contact_searches = st.contact ? st.contact->searches() : 0;
+  res.wall_seconds = st.wall_before + st.wall();
+  res.thread_reductions = st.reductions_before + st.governor.reductions();
+  res.reduced_thread_seconds = st.reduced_before + st.governor.reduced_seconds();
+  res.last = st.energies();
+  st.check_books(res.last);
+  if (res.wall_seconds > 0.0) {
+    res.element_cycles_per_second =
+        static_cast<double>(st.element_count) * static_cast<double>(st.cycle) / res.wall_seconds;
+  }
+  return res;
+}
+
+RunResult run(const core::Model& model, OutputSink& sink, const SolverOptions& options) {
+  Simulation simulation(model, sink, options);
+  return simulation.run();
+}
+
+}  // namespace plyform::engine
