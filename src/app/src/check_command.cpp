@@ -17,6 +17,7 @@
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/law/user_constants.hpp"
+#include "plyform/material/law_registry.hpp"
 #include "plyform/setup/build.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
@@ -91,14 +92,9 @@ void print_contacts(const model::ModelDesc& m, std::ostream& out) {
   }
 }
 
-const char* material_name(const core::Material& m) {
-  static constexpr const char* kNames[] = {"*MAT_ELASTIC",
-                                           "*MAT_MOONEY-RIVLIN_RUBBER",
-                                           "*MAT_PIECEWISE_LINEAR_PLASTICITY",
-                                           "*MAT_POWER_LAW_PLASTICITY",
-                                           "*MAT_ORTHOTROPIC_ELASTIC",
-                                           "*MAT_RIGID"};
-  return kNames[m.index()];
+// The law's keyword, from the registry (material/law_registry.hpp).
+std::string_view material_name(const core::Material& m) {
+  return material::law_info(m).keyword;
 }
 
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
@@ -131,7 +127,7 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                                 m.z0.data(), m.x0.data(), m.y0.data(), m.z0.data()};
   for (const auto& b : m.solid_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
-    const char* law = material_name(mat);
+    const std::string_view law = material_name(mat);
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
     fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}\n",
                part.id, part.title, b.size(), static_cast<int>(b.formulation), law, b.hourglass.ihq,

@@ -4,6 +4,7 @@
 
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/material/constitutive.hpp"
+#include "plyform/material/law_registry.hpp"
 #include "plyform/material/shell.hpp"
 
 namespace plyform::element {
@@ -16,7 +17,7 @@ struct PlaneStress {
   double e, nu, g;
 };
 PlaneStress plane_stress(const core::Material& m) {
-  const double k = core::bulk_modulus(m), g = core::shear_modulus(m);
+  const double k = material::bulk_modulus(m), g = material::shear_modulus(m);
   const double e = 9.0 * k * g / (3.0 * k + g);
   const double nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
   return {e, nu, g};
@@ -25,14 +26,13 @@ PlaneStress plane_stress(const core::Material& m) {
 // Plate wave speed sqrt(E / (rho (1 - nu^2))) for the shell's stable step.
 double plate_wave_speed(const core::Material& m) {
   const PlaneStress p = plane_stress(m);
-  return std::sqrt(p.e / (core::density(m) * (1.0 - p.nu * p.nu)));
+  return std::sqrt(p.e / (material::density(m) * (1.0 - p.nu * p.nu)));
 }
 
+// The law of a material's parameters (material/law_registry.hpp): the kernel reads its traits
+// only, never which law it is.
 template <class M>
-constexpr bool shell_law = std::is_same_v<M, core::ElasticMaterial> ||
-                           std::is_same_v<M, core::PiecewiseLinearPlasticity> ||
-                           std::is_same_v<M, core::PowerLawPlasticity> ||
-                           std::is_same_v<M, core::OrthotropicElasticMaterial>;
+using LawOf = material::LawOf<M>;
 
 struct Geometry {
   double e1[3], e2[3], e3[3];  // co-rotational frame
@@ -342,12 +342,13 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                               {LX[1][k_el], LY[1][k_el], LZ[1][k_el]},
                               {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
                               {LX[3][k_el], LY[3][k_el], LZ[3][k_el]}};
-      if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
+      if constexpr (LawOf<M>::needs_material_axes) {
         // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
         // both projected on the shell.
+        const material::MaterialAxes axes = LawOf<M>::axes(mat);
         double a3[3];
         for (int d = 0; d < 3; ++d)
-          a3[d] = mat.aopt == 2 ? mat.a[d] : x[1][d] - x[0][d];
+          a3[d] = axes.aopt == 2 ? axes.a[d] : x[1][d] - x[0][d];
         const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
         const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
         const double angle = std::atan2(ay, ax);
@@ -359,14 +360,18 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
     }
     {
       const std::size_t q0 = unip * c0;
-      const material::ShellPoints pts{pdxx,         pdyy,         pdxy,          pdyz,
-                                      pdzx,         &st.s[0][q0], &st.s[1][q0],  &st.s[2][q0],
-                                      &st.s[3][q0], &st.s[4][q0], &st.eps_p[q0], pdzz};
-      if constexpr (std::is_same_v<M, core::OrthotropicElasticMaterial>) {
-        material::shell_update(mat, unip * chunk, pts, pcos, psin);
-      } else {
-        material::shell_update(mat, unip * chunk, pts);
+      using Law = LawOf<M>;
+      constexpr std::size_t per_point = Law::history.size();
+      material::ShellPoints pts{pdxx,         pdyy,         pdxy,          pdyz,
+                                pdzx,         &st.s[0][q0], &st.s[1][q0],  &st.s[2][q0],
+                                &st.s[3][q0], &st.s[4][q0], &st.eps_p[q0], pdzz};
+      if constexpr (Law::needs_material_axes) {
+        pts.cos_t = pcos;
+        pts.sin_t = psin;
       }
+      if constexpr (per_point > 0)
+        pts.history = &st.history[per_point * q0];
+      Law::update_shell(mat, unip * chunk, pts);
     }
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
@@ -529,12 +534,13 @@ void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* wei
   }
 }
 
-void ShellBlockState::resize(const core::ShellBlock& block) {
+void ShellBlockState::resize(const core::ShellBlock& block, std::size_t history_per_point) {
   nip = block.nip;
   const std::size_t n = block.size();
   for (auto& c : s)
     c.assign(n * static_cast<std::size_t>(nip), 0.0);
   eps_p.assign(n * static_cast<std::size_t>(nip), 0.0);
+  history.assign(n * static_cast<std::size_t>(nip) * history_per_point, 0.0);
   thickness.resize(n);
   for (std::size_t e = 0; e < n; ++e) {
     const double* t = &block.thickness[4 * e];
@@ -551,11 +557,11 @@ ShellResult shell_forces(const core::ShellBlock& block, const core::Material& ma
                          double dt, std::size_t begin, std::size_t end, const NodalForces& forces,
                          const NodalMoments& moments) {
   const double c = plate_wave_speed(material);
-  const double rho = core::density(material);
+  const double rho = material::density(material);
   return std::visit(
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
-        if constexpr (shell_law<M>) {
+        if constexpr (LawOf<M>::for_shells) {
           return bt(block, m, state, nodes, spin, dt, begin, end, forces, moments, c, rho);
         } else {
           ShellResult r;  // setup::build admits only the shell laws
@@ -590,7 +596,7 @@ bool shell_frame(const core::ShellBlock& block, const double* x, const double* y
 }
 
 bool supports_shells(const core::Material& material) {
-  return std::visit([](const auto& m) { return shell_law<std::decay_t<decltype(m)>>; }, material);
+  return material::law_for_shells(material);
 }
 
 double shell_reference_area(const core::ShellBlock& block, const NodalView& nodes, std::size_t e) {

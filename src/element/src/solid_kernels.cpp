@@ -5,23 +5,17 @@
 #include <variant>
 
 #include "plyform/element/hex8_geometry.hpp"
-#include "plyform/material/constitutive.hpp"
-#include "plyform/material/plasticity.hpp"
+#include "plyform/material/law_registry.hpp"
 
 namespace plyform::element {
 namespace {
 
 constexpr std::size_t kChunk = 32;  // points per material call: scratch stays in L1
 
-using core::ElasticMaterial;
-using core::MooneyRivlinMaterial;
-
-// The laws the solid kernels integrate.
+// The law of a material's parameters (material/law_registry.hpp): the kernels read its traits
+// only, never which law it is.
 template <class M>
-constexpr bool solid_law =
-    std::is_same_v<M, ElasticMaterial> || std::is_same_v<M, MooneyRivlinMaterial> ||
-    std::is_same_v<M, core::PiecewiseLinearPlasticity> ||
-    std::is_same_v<M, core::PowerLawPlasticity>;
+using LawOf = material::LawOf<M>;
 
 void gather(const core::SolidBlock& b, std::size_t e, const double* x, const double* y,
             const double* z, HexCoords& c) {
@@ -63,20 +57,22 @@ struct PointScratch {
 template <class M>
 void update_material(const M& m, std::size_t n, PointScratch& s, double dt, SolidBlockState& st,
                      std::size_t first_point) {
-  const material::SymView sigma{&st.s[0][first_point], &st.s[1][first_point],
-                                &st.s[2][first_point], &st.s[3][first_point],
-                                &st.s[4][first_point], &st.s[5][first_point]};
-  if constexpr (std::is_same_v<M, MooneyRivlinMaterial>) {
-    const double* f[9] = {s.f[0], s.f[1], s.f[2], s.f[3], s.f[4], s.f[5], s.f[6], s.f[7], s.f[8]};
-    material::mooney_rivlin_cauchy(m, n, f, sigma);
-  } else {
-    const material::ConstSymView d{s.d[0], s.d[1], s.d[2], s.d[3], s.d[4], s.d[5]};
-    if constexpr (std::is_same_v<M, ElasticMaterial>) {
-      material::elastic_jaumann(m, n, d, s.w[0], s.w[1], s.w[2], dt, sigma);
-    } else {
-      material::solid_update(m, n, d, s.w[0], s.w[1], s.w[2], dt, sigma, &st.eps_p[first_point]);
-    }
-  }
+  using Law = LawOf<M>;
+  const double* f[9] = {s.f[0], s.f[1], s.f[2], s.f[3], s.f[4], s.f[5], s.f[6], s.f[7], s.f[8]};
+  material::SolidPoints p;
+  p.n = n;
+  p.d = {s.d[0], s.d[1], s.d[2], s.d[3], s.d[4], s.d[5]};
+  p.w[0] = s.w[0];
+  p.w[1] = s.w[1];
+  p.w[2] = s.w[2];
+  p.f = f;
+  p.dt = dt;
+  p.sigma = {&st.s[0][first_point], &st.s[1][first_point], &st.s[2][first_point],
+             &st.s[3][first_point], &st.s[4][first_point], &st.s[5][first_point]};
+  p.eps_p = &st.eps_p[first_point];
+  constexpr std::size_t per_point = Law::history.size();
+  p.history = per_point > 0 ? &st.history[per_point * first_point] : nullptr;
+  Law::update_solid(m, p);
 }
 
 // L on the configuration at t_{n+1} mapped to the mid-step configuration:
@@ -236,7 +232,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
                       const NodalView& nv, double dt, std::size_t begin, std::size_t end,
                       const NodalForces& out) {
   SolidResult r;
-  constexpr bool kTotal = std::is_same_v<M, MooneyRivlinMaterial>;
+  constexpr bool kTotal = LawOf<M>::needs_deformation_gradient;
   const double c_wave = material::dilatational_wave_speed(core::Material{mat});
   const double inv_c = 1.0 / c_wave;
   const double rho = mat.density;
@@ -443,7 +439,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
                               const NodalView& nv, double dt, std::size_t begin, std::size_t end,
                               const NodalForces& out) {
   SolidResult r;
-  constexpr bool kTotal = std::is_same_v<M, MooneyRivlinMaterial>;
+  constexpr bool kTotal = LawOf<M>::needs_deformation_gradient;
   constexpr std::size_t kElems = kChunk / 8;
   const double c_wave = material::dilatational_wave_speed(core::Material{mat});
 
@@ -554,12 +550,13 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
 
 }  // namespace
 
-void SolidBlockState::resize(const core::SolidBlock& block) {
+void SolidBlockState::resize(const core::SolidBlock& block, std::size_t history_per_point) {
   points = block.formulation == core::SolidFormulation::one_point ? 1 : 8;
   const std::size_t n = block.size();
   for (auto& c : s)
     c.assign(n * static_cast<std::size_t>(points), 0.0);
   eps_p.assign(n * static_cast<std::size_t>(points), 0.0);
+  history.assign(n * static_cast<std::size_t>(points) * history_per_point, 0.0);
   hourglass.assign(n * 12, 0.0);
   volume.assign(n, 0.0);
   dt_factor.assign(n, 1.0);
@@ -571,7 +568,7 @@ SolidResult solid_forces(const core::SolidBlock& block, const core::Material& ma
   return std::visit(
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
-        if constexpr (solid_law<M>) {
+        if constexpr (LawOf<M>::for_solids) {
           if (block.formulation == core::SolidFormulation::one_point) {
             return one_point(block, m, state, nodes, dt, begin, end, forces);
           }
@@ -589,7 +586,7 @@ SolidResult solid_forces(const core::SolidBlock& block, const core::Material& ma
 }
 
 bool supports_solids(const core::Material& material) {
-  return std::visit([](const auto& m) { return solid_law<std::decay_t<decltype(m)>>; }, material);
+  return material::law_for_solids(material);
 }
 
 double solid_stable_dt(const core::SolidBlock& block, const core::Material& material,

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <variant>
 
+#include "plyform/material/law_registry.hpp"
+
 namespace plyform::engine {
 
 MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes,
@@ -18,7 +20,7 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
     const core::Material& m = model.materials[static_cast<std::size_t>(b.material)];
     if (std::holds_alternative<core::RigidMaterial>(m))
       continue;  // the rigid body's own mass
-    const double rho = core::density(m);
+    const double rho = material::density(m);
     for (std::size_t e = 0; e < b.size(); ++e) {
       const double v0 = element::solid_reference_volume(b, nodes, e);
       const double me = rho * v0;
@@ -43,7 +45,7 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
     const core::Material& m = model.materials[static_cast<std::size_t>(b.material)];
     if (std::holds_alternative<core::RigidMaterial>(m))
       continue;
-    const double rho = core::density(m);
+    const double rho = material::density(m);
     for (std::size_t e = 0; e < b.size(); ++e) {
       const double area = element::shell_reference_area(b, nodes, e);
       const double t = shells[bi].thickness[e];

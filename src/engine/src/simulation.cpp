@@ -19,6 +19,7 @@
 #include "plyform/engine/checkpoint_file.hpp"
 #include "plyform/engine/solver.hpp"
 #include "plyform/engine/thread_governor.hpp"
+#include "plyform/material/law_registry.hpp"
 
 namespace plyform::engine {
 namespace {
@@ -241,10 +242,16 @@ void Simulation::State::set_up_run() {
   view.packed = packed.data();
   solids.resize(model.solid_blocks.size());
   for (std::size_t b = 0; b < solids.size(); ++b)
-    solids[b].resize(model.solid_blocks[b]);
+    solids[b].resize(
+        model.solid_blocks[b],
+        material::history_per_point(
+            model.materials[static_cast<std::size_t>(model.solid_blocks[b].material)]));
   shells.resize(model.shell_blocks.size());
   for (std::size_t b = 0; b < shells.size(); ++b)
-    shells[b].resize(model.shell_blocks[b]);
+    shells[b].resize(
+        model.shell_blocks[b],
+        material::history_per_point(
+            model.materials[static_cast<std::size_t>(model.shell_blocks[b].material)]));
 
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
   res.physical_mass = mass.physical;
@@ -923,6 +930,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.fixed("hourglass", std::span<double>(st.hourglass));
     a.fixed("volume", std::span<double>(st.volume));
     a.fixed("dt_factor", std::span<double>(st.dt_factor));
+    a.fixed("law_history", std::span<double>(st.history));
   }
   for (std::size_t b = 0; b < shells.size(); ++b) {
     const auto scope = a.scope("shell_block/" + std::to_string(b));
@@ -935,6 +943,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.fixed("thickness", std::span<double>(st.thickness));
     a.fixed("dt_factor", std::span<double>(st.dt_factor));
     a.fixed("area", std::span<double>(st.area));
+    a.fixed("law_history", std::span<double>(st.history));
   }
   {
     const auto scope = a.scope("integrator");

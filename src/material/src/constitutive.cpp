@@ -1,5 +1,7 @@
 #include "plyform/material/constitutive.hpp"
 
+#include "plyform/material/law_registry.hpp"
+
 #include <cmath>
 
 namespace plyform::material {
@@ -165,9 +167,9 @@ void mooney_rivlin_cauchy(const core::MooneyRivlinMaterial& m, std::size_t n,
 }
 
 double dilatational_wave_speed(const core::Material& m) {
-  const double k = core::bulk_modulus(m);
-  const double g = core::shear_modulus(m);
-  return std::sqrt((k + 4.0 / 3.0 * g) / core::density(m));
+  const double k = bulk_modulus(m);
+  const double g = shear_modulus(m);
+  return std::sqrt((k + 4.0 / 3.0 * g) / density(m));
 }
 
 }  // namespace plyform::material

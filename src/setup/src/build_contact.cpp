@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <variant>
 
+#include "plyform/material/law_registry.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
 
@@ -149,7 +150,7 @@ struct ContactBuilder {
       shell_base += static_cast<Index>(b.size());
       if (!pick[static_cast<std::size_t>(b.part)])
         continue;
-      const double kb = core::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
+      const double kb = material::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
       for (std::size_t e = 0; e < b.size(); ++e) {
         const Index* q = &b.connectivity[4 * e];
         const int nn = q[2] == q[3] ? 3 : 4;
@@ -163,7 +164,7 @@ struct ContactBuilder {
     for (const core::SolidBlock& b : m.solid_blocks) {
       if (!pick[static_cast<std::size_t>(b.part)])
         continue;
-      const double kb = core::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
+      const double kb = material::bulk_modulus(m.materials[static_cast<std::size_t>(b.material)]);
       // Exterior faces: those of one element only (among the solids of these parts).
       std::map<std::array<Index, 4>, int> count;
       for (std::size_t e = 0; e < b.size(); ++e) {

@@ -1,6 +1,7 @@
 #pragma once
 // Runtime material parameters (consistent units). One struct per law; a block of elements
-// carries one, dispatched once per block.
+// carries one, dispatched once per block. Each member's law (update, moduli, name, history) is
+// its unit in src/material/include/plyform/material/laws/, listed in law_registry.hpp.
 
 #include <variant>
 #include <vector>
@@ -81,10 +82,6 @@ struct RigidMaterial {
 using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
                               PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial>;
 
-/// Density of any material.
-[[nodiscard]] double density(const Material& m);
-/// Small-strain bulk and shear moduli (for the time step and hourglass scaling).
-[[nodiscard]] double bulk_modulus(const Material& m);
-[[nodiscard]] double shear_modulus(const Material& m);
+// The law of each member (its kernel, moduli and name): material/law_registry.hpp.
 
 }  // namespace plyform::core

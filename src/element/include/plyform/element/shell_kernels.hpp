@@ -37,7 +37,9 @@ struct ShellBlockState {
   /// accumulated from their rates. Empty for the viscous forms.
   std::vector<double> hourglass[5];
 
-  void resize(const core::ShellBlock& block);
+  /// The law's own history (material::history_per_point values per point, point-major).
+  std::vector<double> history;
+  void resize(const core::ShellBlock& block, std::size_t history_per_point = 0);
 };
 
 /// Through-thickness integration points on [-1, 1] and their weights (sum 2).

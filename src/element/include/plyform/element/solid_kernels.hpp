@@ -43,7 +43,9 @@ struct SolidBlockState {
   /// grows by this factor. 1 without mass scaling.
   std::vector<double> dt_factor;
 
-  void resize(const core::SolidBlock& block);
+  /// The law's own history (material::history_per_point values per point, point-major).
+  std::vector<double> history;
+  void resize(const core::SolidBlock& block, std::size_t history_per_point = 0);
 };
 
 /// What a kernel call reports for its element range.

@@ -58,7 +58,7 @@ void mooney_rivlin_cauchy(const core::MooneyRivlinMaterial& m, std::size_t n,
                           const double* const f[9], SymView sigma);
 
 /// Wave speed for the stable time step: sqrt((K + 4/3 G) / rho) with the small-strain moduli
-/// of core::bulk_modulus and core::shear_modulus (length/time).
+/// of material::bulk_modulus and material::shear_modulus (law_registry.hpp) (length/time).
 [[nodiscard]] double dilatational_wave_speed(const core::Material& m);
 
 }  // namespace plyform::material

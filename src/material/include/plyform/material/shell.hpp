@@ -40,6 +40,11 @@ struct ShellPoints {
   double* szx;
   double* eps_p;  ///< effective plastic strain, in/out (unused by the elastic laws; may be null)
   double* dzz;    ///< out: through-thickness strain increment
+  /// Laws with material axes (needs_material_axes): axis a at angle t from the local x axis,
+  /// cos t and sin t per point; null otherwise.
+  const double* cos_t = nullptr;
+  const double* sin_t = nullptr;
+  double* history = nullptr;  ///< the law's own history, its history.size() per point
 };
 
 /// *MAT_ELASTIC, plane stress: d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise,

@@ -1,0 +1,79 @@
+#pragma once
+// The material laws plyform knows: one line each in `Laws`. Everything that depends on the law
+// of a block (its kernel, its moduli, its name in `plyform check`, its history layout) comes
+// from here, chosen once per block, never per point. Adding a law: docs/materials.md, "Adding a
+// law".
+
+#include <cstddef>
+#include <type_traits>
+#include <variant>
+
+#include "plyform/core/material.hpp"
+#include "plyform/material/laws/elastic.hpp"
+#include "plyform/material/laws/mooney_rivlin.hpp"
+#include "plyform/material/laws/orthotropic_elastic.hpp"
+#include "plyform/material/laws/piecewise_linear_plasticity.hpp"
+#include "plyform/material/laws/power_law_plasticity.hpp"
+#include "plyform/material/laws/rigid.hpp"
+
+namespace plyform::material {
+
+template <class... L>
+struct LawList {};
+
+/// The registry.
+using Laws = LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
+                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw>;
+
+namespace detail {
+template <class P, class List>
+struct LawOf {
+  using type = void;
+};
+template <class P, class First, class... Rest>
+struct LawOf<P, LawList<First, Rest...>> {
+  using type = std::conditional_t<std::is_same_v<P, typename First::Parameters>, First,
+                                  typename LawOf<P, LawList<Rest...>>::type>;
+};
+template <class V>
+struct EveryAlternativeHasALaw;
+template <class... P>
+struct EveryAlternativeHasALaw<std::variant<P...>> {
+  static constexpr bool value = (!std::is_void_v<typename LawOf<P, Laws>::type> && ...);
+};
+}  // namespace detail
+
+/// The law whose parameters are P.
+template <class P>
+using LawOf = typename detail::LawOf<P, Laws>::type;
+
+static_assert(detail::EveryAlternativeHasALaw<core::Material>::value,
+              "every member of core::Material needs its law in material::Laws");
+
+template <class Law>
+struct LawTag {
+  using type = Law;
+};
+
+/// f(LawTag<Law>{}, parameters) for the law of `m` (the same return type for every law).
+template <class F>
+decltype(auto) visit_law(const core::Material& m, F&& f) {
+  return std::visit(
+      [&](const auto& p) -> decltype(auto) {
+        using Law = LawOf<std::decay_t<decltype(p)>>;
+        return f(LawTag<Law>{}, p);
+      },
+      m);
+}
+
+[[nodiscard]] const LawInfo& law_info(const core::Material& m);
+[[nodiscard]] Moduli moduli(const core::Material& m);
+[[nodiscard]] double density(const core::Material& m);
+[[nodiscard]] double bulk_modulus(const core::Material& m);
+[[nodiscard]] double shear_modulus(const core::Material& m);
+[[nodiscard]] bool law_for_solids(const core::Material& m);
+[[nodiscard]] bool law_for_shells(const core::Material& m);
+/// Values of the law's own history per integration point (law::history.size()).
+[[nodiscard]] std::size_t history_per_point(const core::Material& m);
+
+}  // namespace plyform::material

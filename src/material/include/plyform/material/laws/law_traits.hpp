@@ -1,0 +1,66 @@
+#pragma once
+// What every material law unit provides (laws/*.hpp), and the point views its updates get.
+//
+// A law is one struct, listed once in law_registry.hpp:
+//   using Parameters = core::...;            its constants (the runtime model's variant member)
+//   static constexpr LawInfo info;           keyword, LS-DYNA number, a one-line summary
+//   static constexpr bool for_solids, for_shells;
+//   static constexpr bool needs_deformation_gradient;  solids: F from the reference configuration
+//                                                       (a total, hyperelastic law), else D and W
+//   static constexpr bool needs_material_axes;          shells: the angle of its axis a per point
+//   static constexpr std::array<std::string_view, N> history;  names of its per-point history
+//                                                       (beyond the stress and the effective
+//                                                       plastic strain, which every block keeps)
+//   static constexpr std::array<std::string_view, M> results;  the result fields it fills
+//   static Moduli moduli(const Parameters&);  small-strain bulk and shear moduli (time step,
+//                                             contact stiffness, hourglass scaling)
+//   static void update_solid(const Parameters&, const SolidPoints&);   when for_solids
+//   static void update_shell(const Parameters&, const ShellPoints&);   when for_shells
+//   static MaterialAxes axes(const Parameters&);                        when needs_material_axes
+// The element kernels read only these traits: a new law needs no edit to a kernel.
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+#include "plyform/material/constitutive.hpp"
+#include "plyform/material/shell.hpp"
+
+namespace plyform::material {
+
+struct LawInfo {
+  std::string_view keyword;  ///< "*MAT_ELASTIC"
+  int number = 0;            ///< LS-DYNA's material number (001)
+  std::string_view summary;
+};
+
+/// Small-strain moduli (stress units).
+struct Moduli {
+  double bulk = 0.0;
+  double shear = 0.0;
+};
+
+inline Moduli isotropic_moduli(double young, double poisson) {
+  return {young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson))};
+}
+
+/// n solid integration points of one call (structure of arrays).
+struct SolidPoints {
+  std::size_t n = 0;
+  ConstSymView d{};                  ///< rate of deformation (tensor shear), 1/time
+  const double* w[3] = {};           ///< spin W_12, W_23, W_31
+  const double* const* f = nullptr;  ///< 9 arrays F_ij (needs_deformation_gradient only)
+  double dt = 0.0;
+  SymView sigma{};            ///< Cauchy stress, in/out
+  double* eps_p = nullptr;    ///< effective plastic strain, in/out
+  double* history = nullptr;  ///< the law's history, history.size() per point, point-major
+};
+
+/// A shell law's material axis a: AOPT 0 along the element's edge from node 1 to node 2, AOPT 2
+/// the global vector `a`, both projected on the shell.
+struct MaterialAxes {
+  int aopt = 0;
+  const double* a = nullptr;  ///< 3 components (AOPT 2)
+};
+
+}  // namespace plyform::material

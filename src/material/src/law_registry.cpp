@@ -1,0 +1,38 @@
+#include "plyform/material/law_registry.hpp"
+
+namespace plyform::material {
+
+const LawInfo& law_info(const core::Material& m) {
+  return visit_law(
+      m, [](auto tag, const auto&) -> const LawInfo& { return decltype(tag)::type::info; });
+}
+
+Moduli moduli(const core::Material& m) {
+  return visit_law(m, [](auto tag, const auto& p) { return decltype(tag)::type::moduli(p); });
+}
+
+double density(const core::Material& m) {
+  return std::visit([](const auto& p) { return p.density; }, m);
+}
+
+double bulk_modulus(const core::Material& m) {
+  return moduli(m).bulk;
+}
+
+double shear_modulus(const core::Material& m) {
+  return moduli(m).shear;
+}
+
+bool law_for_solids(const core::Material& m) {
+  return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::for_solids; });
+}
+
+bool law_for_shells(const core::Material& m) {
+  return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::for_shells; });
+}
+
+std::size_t history_per_point(const core::Material& m) {
+  return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::history.size(); });
+}
+
+}  // namespace plyform::material

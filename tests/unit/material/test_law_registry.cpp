@@ -1,0 +1,50 @@
+// The registry of material laws: every member of core::Material has its law, with LS-DYNA's
+// keyword and number, and the kernels' support follows the laws' traits.
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "plyform/material/law_registry.hpp"
+
+namespace plyform {
+namespace {
+
+TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
+  const struct {
+    core::Material m;
+    const char* keyword;
+    int number;
+    bool solids, shells;
+  } cases[] = {
+      {core::ElasticMaterial{}, "*MAT_ELASTIC", 1, true, true},
+      {core::OrthotropicElasticMaterial{}, "*MAT_ORTHOTROPIC_ELASTIC", 2, false, true},
+      {core::PowerLawPlasticity{}, "*MAT_POWER_LAW_PLASTICITY", 18, true, true},
+      {core::RigidMaterial{}, "*MAT_RIGID", 20, false, false},
+      {core::PiecewiseLinearPlasticity{}, "*MAT_PIECEWISE_LINEAR_PLASTICITY", 24, true, true},
+      {core::MooneyRivlinMaterial{}, "*MAT_MOONEY-RIVLIN_RUBBER", 27, true, false},
+  };
+  std::set<std::string> keywords;
+  for (const auto& c : cases) {
+    const material::LawInfo& info = material::law_info(c.m);
+    EXPECT_EQ(info.keyword, c.keyword);
+    EXPECT_EQ(info.number, c.number) << c.keyword;
+    EXPECT_EQ(material::law_for_solids(c.m), c.solids) << c.keyword;
+    EXPECT_EQ(material::law_for_shells(c.m), c.shells) << c.keyword;
+    EXPECT_EQ(material::history_per_point(c.m), 0u) << c.keyword;
+    keywords.insert(std::string(info.keyword));
+  }
+  EXPECT_EQ(keywords.size(), std::variant_size_v<core::Material>);
+}
+
+TEST(LawRegistry, IsotropicModuliAreTheClosedForms) {
+  const core::Material steel =
+      core::PiecewiseLinearPlasticity{7.85e-9, 210000.0, 0.3, 250.0, 1000.0, {}};
+  EXPECT_DOUBLE_EQ(material::bulk_modulus(steel), 210000.0 / (3.0 * (1.0 - 0.6)));
+  EXPECT_DOUBLE_EQ(material::shear_modulus(steel), 210000.0 / 2.6);
+  EXPECT_DOUBLE_EQ(material::density(steel), 7.85e-9);
+}
+
+}  // namespace
+}  // namespace plyform
