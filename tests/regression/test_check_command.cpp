@@ -178,6 +178,25 @@ TEST(CheckCommand, ListsTheContacts) {
       << r.out;
 }
 
+// *DATABASE_BINARY_D3DUMP: check says where and how often the checkpoints go; the fields plyform
+// does not implement (NR: several files) are rejected by name.
+TEST(CheckCommand, ShowsTheCheckpointsAndRejectsSeveralFiles) {
+  const std::string term = "*CONTROL_TERMINATION\n1.0\n";
+  std::string text = kContacts;
+  text.insert(text.find(term), "*DATABASE_BINARY_D3DUMP\n       500\n");
+  test::TempDir dir;
+  const CheckRun r = check(dir.write("dump.k", text));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("checkpoints: OUTDIR/d3dump every 500 cycles and at the end"),
+            std::string::npos)
+      << r.out;
+  std::string several = kContacts;
+  several.insert(several.find(term), "*DATABASE_BINARY_D3DUMP\n       500         3\n");
+  const CheckRun bad = check(dir.write("dump_nr.k", several));
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("*DATABASE_BINARY_D3DUMP: field NR"), std::string::npos) << bad.err;
+}
+
 // A deck is valid or not: without *CONTROL_TERMINATION the build fails, and check must not
 // first call it valid and summarise it.
 TEST(CheckCommand, ADeckThatDoesNotBuildIsNeverCalledValid) {

@@ -187,6 +187,12 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
     }
   }
   fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
+  if (m.output.d3dump_cycles > 0) {
+    fmt::print(out,
+               "checkpoints: OUTDIR/d3dump every {} cycles and at the end (restart: plyform "
+               "run DECK -o OUTDIR --restart)\n",
+               m.output.d3dump_cycles);
+  }
   if (dt_min < 1e300) {
     const double dt = m.controls.tssfac * dt_min;
     fmt::print(out,

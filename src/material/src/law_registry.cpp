@@ -2,6 +2,19 @@
 
 namespace plyform::material {
 
+std::optional<core::Material> material_from_deck(const model::ModelDesc& deck, int id,
+                                                 const DeckCurve& curve) {
+  std::optional<core::Material> found;
+  for_each_law([&](auto tag) {
+    using Law = typename decltype(tag)::type;
+    for (const auto& card : Law::cards(deck)) {
+      if (card.id == id)
+        found = core::Material{Law::from_card(card, curve)};
+    }
+  });
+  return found;
+}
+
 const LawInfo& law_info(const core::Material& m) {
   return visit_law(
       m, [](auto tag, const auto&) -> const LawInfo& { return decltype(tag)::type::info; });

@@ -1,6 +1,7 @@
 #include "plyform/setup/build.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <variant>
@@ -8,6 +9,7 @@
 #include "build_contact.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
+#include "plyform/material/law_registry.hpp"
 
 namespace plyform::setup {
 namespace {
@@ -77,70 +79,14 @@ struct Builder {
   Index material_of(int id) {
     if (auto it = material_index.find(id); it != material_index.end())
       return it->second;
-    const std::size_t before = m.materials.size();
-    for (const auto& e : d.elastic_materials) {
-      if (e.id == id)
-        m.materials.push_back(core::ElasticMaterial{e.density, e.youngs_modulus, e.poisson_ratio});
-    }
-    for (const auto& r : d.mooney_rivlin_materials) {
-      if (r.id == id)
-        m.materials.push_back(core::MooneyRivlinMaterial{r.density, r.poisson_ratio, r.a, r.b});
-    }
-    for (const auto& p : d.piecewise_linear_materials) {
-      if (p.id != id)
-        continue;
-      core::PiecewiseLinearPlasticity law;
-      law.density = p.density;
-      law.young = p.youngs_modulus;
-      law.poisson = p.poisson_ratio;
-      law.sigy = p.yield_stress;
-      law.etan = p.tangent_modulus;
-      // LCSS (yield stress against effective plastic strain) wins over the 8-point table.
-      if (p.lcss != 0) {
-        const core::LoadCurve& c = m.curves[static_cast<std::size_t>(curve.at(p.lcss))];
-        law.curve.plastic_strain = c.x;
-        law.curve.yield_stress = c.y;
-      } else if (!p.eps.empty()) {
-        law.curve.plastic_strain = p.eps;
-        law.curve.yield_stress = p.es;
-      }
-      m.materials.push_back(law);
-    }
-    for (const auto& p : d.power_law_materials) {
-      if (p.id != id)
-        continue;
-      core::PowerLawPlasticity law;
-      law.density = p.density;
-      law.young = p.youngs_modulus;
-      law.poisson = p.poisson_ratio;
-      law.k = p.k;
-      law.n = p.n;
-      law.sigy = p.sigy;
-      m.materials.push_back(law);
-    }
-    for (const auto& o : d.orthotropic_elastic_materials) {
-      if (o.id != id)
-        continue;
-      core::OrthotropicElasticMaterial law;
-      law.density = o.density;
-      law.ea = o.ea, law.eb = o.eb, law.ec = o.ec;
-      law.prba = o.prba, law.prca = o.prca, law.prcb = o.prcb;
-      law.gab = o.gab, law.gbc = o.gbc, law.gca = o.gca;
-      law.aopt = o.aopt;
-      for (int k = 0; k < 3; ++k) {
-        law.a[k] = o.a[static_cast<std::size_t>(k)];
-        law.d[k] = o.d[static_cast<std::size_t>(k)];
-      }
-      m.materials.push_back(law);
-    }
-    for (const auto& r : d.rigid_materials) {
-      if (r.id != id)
-        continue;
-      m.materials.push_back(core::RigidMaterial{r.density, r.youngs_modulus, r.poisson_ratio,
-                                                static_cast<double>(r.cmo), r.con1, r.con2});
-    }
-    if (m.materials.size() == before)
+    // Each law reads its own cards (material/laws/, the registry's from_card).
+    std::optional<core::Material> law =
+        material::material_from_deck(d, id, [&](int curve_id) -> const core::LoadCurve& {
+          return m.curves[static_cast<std::size_t>(curve.at(curve_id))];
+        });
+    if (!law)
       return -1;
+    m.materials.push_back(std::move(*law));
     const auto index = static_cast<Index>(m.materials.size() - 1);
     material_index.emplace(id, index);
     return index;

@@ -22,6 +22,21 @@ struct NodalState {
   std::vector<double> inertia;        ///< lumped rotary inertia (isotropic)
   std::vector<double> temperature;    ///< nodal temperature at t_n (the contact law reads it)
 
+  /// f(name, array) for every field that changes during a run (the checkpoint's records);
+  /// mass and inertia are set up once from the elements. A new nodal field: a member above and
+  /// a line here.
+  template <class F>
+  void for_each_state_field(F&& f) {
+    f("x", x), f("y", y), f("z", z), f("ux", ux), f("uy", uy), f("uz", uz);
+    f("vx", vx), f("vy", vy), f("vz", vz), f("vnx", vnx), f("vny", vny), f("vnz", vnz);
+    f("fx", fx), f("fy", fy), f("fz", fz), f("ex", ex), f("ey", ey), f("ez", ez);
+    f("rx", rx), f("ry", ry), f("rz", rz);
+    f("wx", wx), f("wy", wy), f("wz", wz), f("wnx", wnx), f("wny", wny), f("wnz", wnz);
+    f("mx", mx), f("my", my), f("mz", mz);
+    f("temperature", temperature);
+  }
+
+  /// Every array to n zeros.
   void resize(std::size_t n);
   [[nodiscard]] std::size_t size() const { return x.size(); }
 };

@@ -5,6 +5,7 @@
 // law".
 
 #include <cstddef>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -65,6 +66,17 @@ decltype(auto) visit_law(const core::Material& m, F&& f) {
       },
       m);
 }
+
+/// f(LawTag<Law>{}) for every law of the registry, in its order.
+template <class F>
+void for_each_law(F&& f) {
+  [&]<class... L>(LawList<L...>) { (f(LawTag<L>{}), ...); }(Laws{});
+}
+
+/// The runtime parameters of deck material `id` (any *MAT_ keyword of the registry), through the
+/// laws' from_card; none when no law's cards have that id.
+[[nodiscard]] std::optional<core::Material> material_from_deck(const model::ModelDesc& deck, int id,
+                                                               const DeckCurve& curve);
 
 [[nodiscard]] const LawInfo& law_info(const core::Material& m);
 [[nodiscard]] Moduli moduli(const core::Material& m);

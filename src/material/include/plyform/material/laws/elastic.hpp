@@ -13,6 +13,10 @@ struct ElasticLaw {
   static constexpr bool needs_deformation_gradient = false, needs_material_axes = false;
   static constexpr std::array<std::string_view, 0> history{};
   static constexpr std::array<std::string_view, 1> results{"stress"};
+  static const auto& cards(const model::ModelDesc& d) { return d.elastic_materials; }
+  static Parameters from_card(const model::MatElasticDesc& c, const DeckCurve&) {
+    return {c.density, c.youngs_modulus, c.poisson_ratio};
+  }
   static Moduli moduli(const Parameters& m) { return isotropic_moduli(m.young, m.poisson); }
   static void update_solid(const Parameters& m, const SolidPoints& p) {
     elastic_jaumann(m, p.n, p.d, p.w[0], p.w[1], p.w[2], p.dt, p.sigma);

@@ -17,11 +17,17 @@
 //   static void update_solid(const Parameters&, const SolidPoints&);   when for_solids
 //   static void update_shell(const Parameters&, const ShellPoints&);   when for_shells
 //   static MaterialAxes axes(const Parameters&);                        when needs_material_axes
+//   static const auto& cards(const model::ModelDesc&);  the deck's cards of its keyword
+//   static Parameters from_card(const Card&, const DeckCurve&);  their values as parameters
 // The element kernels read only these traits: a new law needs no edit to a kernel.
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string_view>
+
+#include "plyform/core/load_curve.hpp"
+#include "plyform/model/model_desc.hpp"
 
 #include "plyform/material/constitutive.hpp"
 #include "plyform/material/shell.hpp"
@@ -43,6 +49,9 @@ struct Moduli {
 inline Moduli isotropic_moduli(double young, double poisson) {
   return {young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson))};
 }
+
+/// A deck curve by its id (the runtime model's copy), for laws whose cards refer to curves.
+using DeckCurve = std::function<const core::LoadCurve&(int id)>;
 
 /// n solid integration points of one call (structure of arrays).
 struct SolidPoints {

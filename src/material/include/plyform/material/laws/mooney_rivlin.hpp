@@ -15,6 +15,10 @@ struct MooneyRivlinLaw {
   static constexpr std::array<std::string_view, 1> results{"stress"};
   /// Linearising W at F = I: G = 2 (A + B) and, with LS-DYNA's D(nu),
   /// K = 28 A / 3 + 64 B / 3 + 8 D = 2 G (1 + nu) / (3 (1 - 2 nu)) (docs/materials.md).
+  static const auto& cards(const model::ModelDesc& d) { return d.mooney_rivlin_materials; }
+  static Parameters from_card(const model::MatMooneyRivlinDesc& c, const DeckCurve&) {
+    return {c.density, c.poisson_ratio, c.a, c.b};
+  }
   static Moduli moduli(const Parameters& m) {
     const double g = 2.0 * (m.a + m.b);
     return {2.0 * g * (1.0 + m.poisson) / (3.0 * (1.0 - 2.0 * m.poisson)), g};

@@ -17,6 +17,20 @@ struct OrthotropicElasticLaw {
   static constexpr std::array<std::string_view, 1> results{"stress"};
   /// The stiffest direction bounds the wave speed (time step); the largest shear modulus
   /// scales the hourglass control.
+  static const auto& cards(const model::ModelDesc& d) { return d.orthotropic_elastic_materials; }
+  static Parameters from_card(const model::MatOrthotropicElasticDesc& c, const DeckCurve&) {
+    Parameters law;
+    law.density = c.density;
+    law.ea = c.ea, law.eb = c.eb, law.ec = c.ec;
+    law.prba = c.prba, law.prca = c.prca, law.prcb = c.prcb;
+    law.gab = c.gab, law.gbc = c.gbc, law.gca = c.gca;
+    law.aopt = c.aopt;
+    for (std::size_t k = 0; k < 3; ++k) {
+      law.a[k] = c.a[k];
+      law.d[k] = c.d[k];
+    }
+    return law;
+  }
   static Moduli moduli(const Parameters& m) {
     const double e = std::max(m.ea, std::max(m.eb, m.ec));
     const double g = std::max(m.gab, std::max(m.gbc, m.gca));

@@ -15,6 +15,26 @@ struct PiecewiseLinearPlasticityLaw {
   static constexpr bool needs_deformation_gradient = false, needs_material_axes = false;
   static constexpr std::array<std::string_view, 0> history{};
   static constexpr std::array<std::string_view, 2> results{"stress", "plastic_strain"};
+  static const auto& cards(const model::ModelDesc& d) { return d.piecewise_linear_materials; }
+  /// LCSS (yield stress against effective plastic strain) wins over the 8-point table.
+  static Parameters from_card(const model::MatPiecewiseLinearPlasticityDesc& c,
+                              const DeckCurve& curve) {
+    Parameters law;
+    law.density = c.density;
+    law.young = c.youngs_modulus;
+    law.poisson = c.poisson_ratio;
+    law.sigy = c.yield_stress;
+    law.etan = c.tangent_modulus;
+    if (c.lcss != 0) {
+      const core::LoadCurve& lc = curve(c.lcss);
+      law.curve.plastic_strain = lc.x;
+      law.curve.yield_stress = lc.y;
+    } else if (!c.eps.empty()) {
+      law.curve.plastic_strain = c.eps;
+      law.curve.yield_stress = c.es;
+    }
+    return law;
+  }
   static Moduli moduli(const Parameters& m) { return isotropic_moduli(m.young, m.poisson); }
   static void update_solid(const Parameters& m, const SolidPoints& p) {
     solid_update(m, p.n, p.d, p.w[0], p.w[1], p.w[2], p.dt, p.sigma, p.eps_p);

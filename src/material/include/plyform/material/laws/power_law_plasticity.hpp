@@ -14,6 +14,17 @@ struct PowerLawPlasticityLaw {
   static constexpr bool needs_deformation_gradient = false, needs_material_axes = false;
   static constexpr std::array<std::string_view, 0> history{};
   static constexpr std::array<std::string_view, 2> results{"stress", "plastic_strain"};
+  static const auto& cards(const model::ModelDesc& d) { return d.power_law_materials; }
+  static Parameters from_card(const model::MatPowerLawPlasticityDesc& c, const DeckCurve&) {
+    Parameters law;
+    law.density = c.density;
+    law.young = c.youngs_modulus;
+    law.poisson = c.poisson_ratio;
+    law.k = c.k;
+    law.n = c.n;
+    law.sigy = c.sigy;
+    return law;
+  }
   static Moduli moduli(const Parameters& m) { return isotropic_moduli(m.young, m.poisson); }
   static void update_solid(const Parameters& m, const SolidPoints& p) {
     solid_update(m, p.n, p.d, p.w[0], p.w[1], p.w[2], p.dt, p.sigma, p.eps_p);

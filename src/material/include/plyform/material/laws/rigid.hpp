@@ -13,6 +13,11 @@ struct RigidLaw {
   static constexpr bool needs_deformation_gradient = false, needs_material_axes = false;
   static constexpr std::array<std::string_view, 0> history{};
   static constexpr std::array<std::string_view, 0> results{};
+  static const auto& cards(const model::ModelDesc& d) { return d.rigid_materials; }
+  static Parameters from_card(const model::MatRigidDesc& c, const DeckCurve&) {
+    return {c.density, c.youngs_modulus, c.poisson_ratio, static_cast<double>(c.cmo), c.con1,
+            c.con2};
+  }
   static Moduli moduli(const Parameters& m) { return isotropic_moduli(m.young, m.poisson); }
 };
 
