@@ -80,7 +80,21 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.restart) {
     try {
       resume = engine::read_checkpoint(checkpoint, read.model.source_fingerprint);
+      // A run cannot go back: the end time must not lie before the checkpoint's time.
+      const double end_time = options.end_time ? *options.end_time : model.controls.end_time;
+      const double t = engine::checkpoint_time(*resume);
+      if (end_time > 0.0 && t > end_time * (1.0 + 1e-9)) {
+        fmt::print(err,
+                   "error: cannot restart: the checkpoint {} is at t = {:.6g}, after the end "
+                   "time {:.6g}{}\n",
+                   checkpoint.string(), t, end_time,
+                   options.end_time ? " (--end-time)" : " (ENDTIM; --end-time runs further)");
+        return 1;
+      }
     } catch (const engine::CheckpointError& e) {
+      fmt::print(err, "error: cannot restart: {}\n", e.what());
+      return 1;
+    } catch (const core::StateError& e) {
       fmt::print(err, "error: cannot restart: {}\n", e.what());
       return 1;
     }

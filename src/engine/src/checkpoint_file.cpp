@@ -111,6 +111,14 @@ void write_checkpoint(const std::filesystem::path& file, std::uint64_t fingerpri
   }
 }
 
+double checkpoint_time(const core::StateArchive::Records& records) {
+  auto archive = core::StateArchive::for_loading(records);
+  const auto scope = archive.scope("engine/integrator");
+  double t = 0.0;
+  archive.value("t", t);
+  return t;
+}
+
 core::StateArchive::Records read_checkpoint(const std::filesystem::path& file,
                                             std::uint64_t fingerprint) {
   std::ifstream in(file, std::ios::binary);

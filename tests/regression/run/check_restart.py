@@ -181,6 +181,13 @@ def mode_refuse(plyform, deck, outdir):
     with open(other, "w") as f:
         f.write("$ one comment line more\n" + text)
     refused("another deck", "belongs to another deck", other)
+    with open(os.path.join(done, "summary.json")) as f:
+        end = json.load(f)["final_time"]
+    r = run(plyform, deck, done, "--restart", "--end-time", repr(0.5 * end))
+    check(r.returncode == 1 and "after the end time" in r.stderr,
+          f"--end-time before the checkpoint: exit {r.returncode}: {r.stderr}")
+    check({f: open(os.path.join(done, f), "rb").read() for f in results(done)} == before,
+          "--end-time before the checkpoint: a refused restart changed the outputs")
     with open(dump, "wb") as f:
         f.write(good[: len(good) // 2])
     refused("a truncated checkpoint", "truncated")

@@ -38,6 +38,10 @@ std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 146959810393466
 void write_checkpoint(const std::filesystem::path& file, std::uint64_t fingerprint,
                       const core::StateArchive::Records& records);
 
+/// The simulated time a checkpoint's records were saved at (engine/integrator/t); throws
+/// core::StateError when they have none.
+double checkpoint_time(const core::StateArchive::Records& records);
+
 /// Reads `file` and checks its version, fingerprint and checksum; throws CheckpointError.
 core::StateArchive::Records read_checkpoint(const std::filesystem::path& file,
                                             std::uint64_t fingerprint);
