@@ -205,6 +205,7 @@ struct Simulation::State {
   const Energies& energies();
   void check_books(const Energies& e);
   void write_outputs(bool last);
+  core::StateArchive::Records checkpoint_records();
   void write_checkpoint();
   [[nodiscard]] Snapshot snapshot() const;
   void fail(const std::string& why);
@@ -973,7 +974,8 @@ void Simulation::State::visit_state(core::StateArchive& a) {
   }
 }
 
-void Simulation::State::write_checkpoint() {
+// The engine's state under "engine/", the output sink's under "outputs/".
+core::StateArchive::Records Simulation::State::checkpoint_records() {
   auto archive = core::StateArchive::for_saving();
   {
     const auto scope = archive.scope("engine");
@@ -983,7 +985,11 @@ void Simulation::State::write_checkpoint() {
     const auto scope = archive.scope("outputs");
     sink.save_state(archive);
   }
-  engine::write_checkpoint(options.checkpoint, options.fingerprint, archive.records());
+  return archive.take_records();
+}
+
+void Simulation::State::write_checkpoint() {
+  engine::write_checkpoint(options.checkpoint, options.fingerprint, checkpoint_records());
   ++res.checkpoints;
   res.checkpoint = options.checkpoint.string();
 }
@@ -1015,16 +1021,7 @@ void Simulation::restore(const core::StateArchive::Records& records) {
 }
 
 core::StateArchive::Records Simulation::save() {
-  auto archive = core::StateArchive::for_saving();
-  {
-    const auto scope = archive.scope("engine");
-    state_->visit_state(archive);
-  }
-  {
-    const auto scope = archive.scope("outputs");
-    state_->sink.save_state(archive);
-  }
-  return archive.take_records();
+  return state_->checkpoint_records();
 }
 
 RunResult Simulation::run() {
