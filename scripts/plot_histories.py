@@ -12,6 +12,9 @@ and writes next to them:
   cohesive.csv -> cohesive.png  gap, pressure, shear and beta of the cohesive history nodes
   interface_energy.csv -> interface_energy.png  per interface: the contact work and the law's
                   energy books (stored, damage, viscous, friction, damping; healing)
+  heat.csv     -> heat.png      the heat ledger: heat stored against the heat that entered by
+                                each path, and their difference (the balance)
+  tprint.csv   -> tprint.png    temperatures of the history nodes against time
 glstat.csv is required; the others are plotted when present. Exit status 0 on success, 1 when
 OUTDIR or glstat.csv is missing or a file cannot be read, 2 on a usage error.
 """
@@ -244,6 +247,55 @@ def plot_interface_energy(outdir, title):
     return target
 
 
+def plot_heat(outdir, title):
+    """The heat ledger: stored = the sum of the paths (docs/thermal.md)."""
+    path = os.path.join(outdir, "heat.csv")
+    paths = ["contact", "friction", "plastic", "convection", "radiation", "flux", "prescribed",
+             "generation"]
+    cols = read_table(path, ["time", "stored"] + paths)
+    d = {n: floats(cols[n], path, n) for n in ["time", "stored"] + paths}
+    if len(d["time"]) == 0:
+        fail(f"{path} has no rows")
+    t = d["time"]
+    entered = sum(d[p] for p in paths)
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True, layout="constrained",
+                                 gridspec_kw={"height_ratios": [3, 1]})
+    for p in paths:
+        if np.any(d[p] != 0.0):
+            ax.plot(t, d[p], lw=1.2, label=p)
+    ax.plot(t, d["stored"], color="k", lw=1.8, label="stored")
+    ax.plot(t, entered, color="k", lw=1.0, ls="--", label="sum of the paths")
+    style(ax, ylabel="heat (cumulative)")
+    ax.legend(fontsize=8, frameon=False, ncol=2, loc="best")
+    bx.plot(t, d["stored"] - entered, color="C3", lw=1.2)
+    style(bx, xlabel="time", ylabel="stored - entered")
+    fig.suptitle(title + "  heat ledger", fontsize=10)
+    target = os.path.join(outdir, "heat.png")
+    fig.savefig(target, dpi=120)
+    plt.close(fig)
+    return target
+
+
+def plot_tprint(outdir, title):
+    path = os.path.join(outdir, "tprint.csv")
+    cols = read_table(path, ["time", "node", "temperature"])
+    d = {n: floats(cols[n], path, n) for n in ["time", "temperature"]}
+    groups = group(cols, ["node"], path)
+    if not groups:
+        fail(f"{path} has no rows")
+    fig, ax = plt.subplots(figsize=(8.0, 4.5), layout="constrained")
+    for key in list(groups)[:MAX_CURVES]:
+        idx = np.array(groups[key])
+        ax.plot(d["time"][idx], d["temperature"][idx], lw=1.3, label=f"node {key[0]}")
+    style(ax, xlabel="time", ylabel="temperature")
+    ax.legend(fontsize=8, frameon=False, loc="best")
+    fig.suptitle(title + "  temperatures of the history nodes", fontsize=10)
+    target = os.path.join(outdir, "tprint.png")
+    fig.savefig(target, dpi=120)
+    plt.close(fig)
+    return target
+
+
 def main(argv):
     if len(argv) != 1 or argv[0] in ("-h", "--help"):
         print(__doc__, file=sys.stderr)
@@ -267,7 +319,8 @@ def main(argv):
     written = [plot_energies(outdir, title)]
     for name, plot in (("nodout.csv", plot_nodout), ("rcforc.csv", plot_rcforc),
                        ("cohesive.csv", plot_cohesive),
-                       ("interface_energy.csv", plot_interface_energy)):
+                       ("interface_energy.csv", plot_interface_energy),
+                       ("heat.csv", plot_heat), ("tprint.csv", plot_tprint)):
         if os.path.isfile(os.path.join(outdir, name)):
             written.append(plot(outdir, title))
         elif name == "nodout.csv":

@@ -27,6 +27,11 @@ struct RecordingSink : engine::OutputSink {
   void contact_forces(double time, const std::vector<contact::InterfaceReport>& r) override {
     contact.emplace_back(time, r);
   }
+  /// Heat books (computed temperatures): (time, ledger).
+  std::vector<std::pair<double, thermal::HeatLedger>> heat_books;
+  void heat(double time, const thermal::HeatLedger& h) override {
+    heat_books.emplace_back(time, h);
+  }
   void nodout(const engine::Snapshot& s) override {
     if (on_nodout)
       on_nodout(s);

@@ -186,6 +186,29 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                  range(km_area), c.penopt, used, c.penalty == core::PenaltyKind::mass ? 1 : 0);
     }
   }
+  if (m.thermal.enabled) {
+    const core::ThermalControls& t = m.thermal;
+    std::size_t conducting = 0;
+    for (const core::Part& p : m.parts)
+      conducting += p.thermal_material >= 0 ? 1 : 0;
+    fmt::print(out,
+               "heat transfer: {} ({}), {} part{} conducting, {} heat boundar{}; {} step {:g}{}, "
+               "theta {:g} ({}), {} solver, speed-up factor {}\n",
+               t.thermal_only ? "thermal only (SOLN 1)" : "coupled with the mechanics (SOLN 2)",
+               t.steady ? "steady state" : "transient", conducting, conducting == 1 ? "" : "s",
+               m.heat_boundaries.size(), m.heat_boundaries.size() == 1 ? "y" : "ies",
+               t.variable_step ? "variable" : "fixed", t.dt_initial,
+               t.variable_step ? fmt::format(" (DTEMP {:g})", t.dtemp) : std::string(), t.theta,
+               t.theta == 0.5   ? "Crank-Nicolson"
+               : t.theta == 1.0 ? "backward Euler"
+                                : "implicit",
+               t.solver == 12 ? "diagonally scaled conjugate-gradient" : "direct LDL^T",
+               t.tsf_curve >= 0 ? std::string("from a curve") : fmt::format("{:g}", t.tsf));
+    if (!t.thermal_only && t.fwork > 0.0)
+      fmt::print(out,
+                 "  note: plastic work and friction do not heat the parts yet (FWORK, FRCENG "
+                 "come with the contact heat)\n");
+  }
   fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
   if (m.output.d3dump_cycles > 0) {
     fmt::print(out,

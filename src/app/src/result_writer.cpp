@@ -18,6 +18,8 @@ constexpr const char* kBndout = "bndout.csv";
 constexpr const char* kRcforc = "rcforc.csv";
 constexpr const char* kInterfaceEnergy = "interface_energy.csv";
 constexpr const char* kCohesive = "cohesive.csv";
+constexpr const char* kHeat = "heat.csv";
+constexpr const char* kTprint = "tprint.csv";
 
 }  // namespace
 
@@ -79,6 +81,16 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
     cohesive_model_ = cohesive_model_ || c.cohesive;
   if (cohesive_model_ && model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty())
     cohesive_.emplace(outdir / output::cohesive_file_name, at(kCohesive));
+  if (model.thermal.enabled) {
+    heat_.emplace(
+        outdir / kHeat,
+        std::vector<std::string>{"time", "stored", "contact", "friction", "plastic", "convection",
+                                 "radiation", "flux", "prescribed", "generation"},
+        at(kHeat));
+    if (model.output.tprint_dt > 0.0 && !model.output.history_nodes.empty())
+      tprint_.emplace(outdir / kTprint, std::vector<std::string>{"time", "node", "temperature"},
+                      at(kTprint));
+  }
   node_ids_.assign(model.node_id.begin(), model.node_id.end());
   for (const core::SolidBlock& b : model.solid_blocks) {
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -185,7 +197,7 @@ void ResultWriter::state(const engine::Snapshot& s) {
       thickness_[cell] = st.thickness[e];
     }
   }
-  if (!model_.temperature0.empty())
+  if (!model_.temperature0.empty() || model_.thermal.enabled)
     std::copy(ns.temperature.begin(), ns.temperature.end(), temperature_.begin());
   if (cohesive_model_ && s.contact != nullptr) {
     // Nodes that are no slave node of a cohesive interface: NaN (nothing defined there).
@@ -301,6 +313,22 @@ void ResultWriter::nodout(const engine::Snapshot& s) {
   cohesive_->write(cohesive_rows_);
 }
 
+void ResultWriter::heat(double time, const thermal::HeatLedger& h) {
+  if (heat_)
+    heat_->row({time, h.stored, h.contact, h.friction, h.plastic, h.convection, h.radiation, h.flux,
+                h.prescribed, h.generation});
+}
+
+void ResultWriter::temperatures(const engine::Snapshot& s) {
+  if (!tprint_)
+    return;
+  for (core::Index i : model_.output.history_nodes) {
+    const auto node = static_cast<std::size_t>(i);
+    tprint_->row_mixed(
+        {s.time, static_cast<std::int64_t>(model_.node_id[node]), s.nodes->temperature[node]});
+  }
+}
+
 void ResultWriter::progress(double time, double end_time, long cycle, double dt, double wall) {
   progress_.update(time, end_time, cycle, dt, wall);
 }
@@ -326,6 +354,10 @@ void ResultWriter::save_state(core::StateArchive& archive) {
     put(kInterfaceEnergy, *interface_energy_);
   if (cohesive_)
     put(kCohesive, cohesive_->csv());
+  if (heat_)
+    put(kHeat, *heat_);
+  if (tprint_)
+    put(kTprint, *tprint_);
 }
 
 void ResultWriter::finish() {

@@ -1,8 +1,8 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
 // glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, rcforc.csv and
-// interface_energy.csv (contacts), cohesive.csv (history nodes of cohesive interfaces) and the
-// progress line, in OUTDIR.
+// interface_energy.csv (contacts), cohesive.csv (history nodes of cohesive interfaces), heat.csv
+// and tprint.csv (computed temperatures) and the progress line, in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -33,6 +33,8 @@ class ResultWriter : public engine::OutputSink {
   void boundary_forces(const engine::Snapshot& s) override;
   void contact_forces(double time,
                       const std::vector<contact::InterfaceReport>& interfaces) override;
+  void heat(double time, const thermal::HeatLedger& ledger) override;
+  void temperatures(const engine::Snapshot& s) override;
   void save_state(core::StateArchive& archive) override;
   void finish();
 
@@ -49,6 +51,8 @@ class ResultWriter : public engine::OutputSink {
   std::vector<core::Index> bndout_nodes_;  // prescribed-motion nodes, in index order
   std::optional<output::CsvHistory> interface_energy_;
   std::optional<output::CohesiveFile> cohesive_;
+  std::optional<output::CsvHistory> heat_;    // heat.csv (temperatures computed)
+  std::optional<output::CsvHistory> tprint_;  // tprint.csv (*DATABASE_TPRINT)
   bool cohesive_model_ = false;  // a cohesive interface: its arrays go into the VTU states
   std::vector<contact::SlaveNodeResult> slave_results_;
   output::ProgressLine progress_;

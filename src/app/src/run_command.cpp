@@ -184,6 +184,19 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
                model.contacts.size(), model.contacts.size() == 1 ? "" : "s", slaves,
                result.last.contact, result.contact_searches);
   }
+  if (model.thermal.enabled) {
+    const thermal::HeatLedger& h = result.heat;
+    fmt::print(out,
+               "heat: {} thermal steps{}; stored {:.6g}, entered {:.6g} (convection {:.6g}, "
+               "radiation {:.6g}, flux {:.6g}, prescribed {:.6g}, generation {:.6g}, contact "
+               "{:.6g}, friction {:.6g}, plastic {:.6g})\n",
+               result.thermal_steps,
+               result.thermal_iterations > 0
+                   ? fmt::format(" ({} conjugate-gradient iterations)", result.thermal_iterations)
+                   : std::string(),
+               h.stored, h.entered(), h.convection, h.radiation, h.flux, h.prescribed, h.generation,
+               h.contact, h.friction, h.plastic);
+  }
   if (result.added_mass > 0.0) {
     fmt::print(out, "mass scaling added {:.6g} ({:.3g} % of {:.6g})\n", result.added_mass,
                100.0 * summary.added_mass_ratio, result.physical_mass);

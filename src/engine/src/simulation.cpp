@@ -140,6 +140,8 @@ struct Simulation::State {
   std::vector<element::ShellBlockState> shells;
   std::optional<rigid::RigidBodies> rigid_bodies;
   std::optional<contact::ContactSet> contact;
+  std::optional<thermal::HeatSolver> heat;  // temperatures computed (SOLN 1 or 2)
+  bool thermal_only = false;                // SOLN 1: no mechanics
   // Velocities v_{n+1/2} of the last velocity update, and w such that
   // v_{n+1} = old + (v - old) w (outputs and kinetic energy at t_{n+1}).
   std::vector<double> old_x, old_y, old_z, old_wx, old_wy, old_wz;
@@ -161,7 +163,9 @@ struct Simulation::State {
   bool warned_hourglass = false, warned_contact = false;
   // Output clocks.
   double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
-  double next_bndout = 0.0;
+  double next_bndout = 0.0, next_tprint = 0.0, next_heat = 0.0;
+  bool warned_thermal = false;    // a thermal step's iterations did not converge
+  double heat_written_at = -1.0;  // the time of the last heat.csv row
   bool state_written = false;
   double wall_before = 0.0;  // wall seconds of the runs before a restart
   int reductions_before = 0;
@@ -185,9 +189,11 @@ struct Simulation::State {
   bool internal_forces();
   void loads_and_temperatures();
   void contact_forces();
+  bool heat_conduction(bool now);
   bool step_vote(double& dt_next);
   bool velocities(double dt_next);
   bool cycle_once();
+  bool thermal_cycle_once();
 
   // Their parts and helpers.
   void pack();
@@ -254,6 +260,10 @@ void Simulation::State::set_up_run() {
         material::history_per_point(
             model.materials[static_cast<std::size_t>(model.shell_blocks[b].material)]));
 
+  if (model.thermal.enabled) {
+    heat.emplace(model, std::span<double>(s.temperature));
+    thermal_only = model.thermal.thermal_only;
+  }
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
   res.physical_mass = mass.physical;
   res.added_mass = mass.added;
@@ -348,6 +358,8 @@ void Simulation::State::set_up_run() {
   }
   if (model.controls.dt_init > 0.0)
     dt = std::min(dt, model.controls.dt_init);
+  if (thermal_only)  // the cycle is the thermal step
+    dt = heat->step_length(0.0);
   end_time = options.end_time ? *options.end_time : model.controls.end_time;
   if (end_time > 0.0)
     dt = std::min(dt, end_time);
@@ -763,6 +775,25 @@ void Simulation::State::write_outputs(bool last) {
     while (next_bndout <= t + eps_t)
       next_bndout += out.bndout_dt;
   }
+  if (heat) {
+    // The heat books on the tprint clock, else on glstat's (and at the end).
+    const double heat_dt = out.tprint_dt > 0.0 ? out.tprint_dt : out.glstat_dt;
+    if (t + eps_t >= next_heat || last) {
+      sink.heat(t, heat->ledger());
+      heat_written_at = t;
+      if (heat_dt > 0.0) {
+        while (next_heat <= t + eps_t)
+          next_heat += heat_dt;
+      } else {
+        next_heat = end_time;
+      }
+    }
+    if (out.tprint_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_tprint || last)) {
+      sink.temperatures(snapshot());
+      while (next_tprint <= t + eps_t)
+        next_tprint += out.tprint_dt;
+    }
+  }
   if (contact && out.rcforc_dt > 0.0 && (t + eps_t >= next_rcforc || last)) {
     sink.contact_forces(t, contact->report());
     while (next_rcforc <= t + eps_t)
@@ -816,6 +847,36 @@ void Simulation::State::loads_and_temperatures() {
   }
 }
 
+// A thermal step from the last thermal time to t when one is due (`now`: always), on the
+// current geometry; false (with the diagnosis) when the temperatures went non-finite.
+bool Simulation::State::heat_conduction(bool now) {
+  if (!heat)
+    return true;
+  const bool at_end = end_time > 0.0 && t + eps_t >= end_time;
+  const double dt_mech = thermal_only ? 0.0 : dt;
+  if (!now && !at_end && t + eps_t < heat->time() + heat->step_length(dt_mech))
+    return true;
+  thermal::Geometry g;
+  g.xyz = packed.data();
+  g.stride = 6;
+  for (const element::ShellBlockState& b : shells)
+    g.shell_thickness.push_back(b.thickness.data());
+  const thermal::StepReport r =
+      heat->advance(t, g, std::span<double>(s.temperature), thermal::MechanicalHeat{}, dt_mech);
+  if (!r.ok) {
+    sync();
+    fail(r.error + " (cycle " + std::to_string(cycle) + ")");
+    return false;
+  }
+  if (!r.converged && !warned_thermal) {
+    warned_thermal = true;
+    res.warnings.push_back("the thermal conjugate gradients did not reach RELTOL in " +
+                           std::to_string(r.iterations) + " iterations at t = " + time_text(t) +
+                           " (raise MAXITR, or use SOLVER 11)");
+  }
+  return true;
+}
+
 void Simulation::State::contact_forces() {
   if (contact) {
     contact->apply(t, dt, packed.data(), s.temperature.data(), s.fx.data(), s.fy.data(),
@@ -867,12 +928,29 @@ bool Simulation::State::cycle_once() {
   if (!internal_forces())
     return false;
   loads_and_temperatures();
+  if (!heat_conduction(false))
+    return false;
   contact_forces();
   double dt_next = 0.0;
   if (!step_vote(dt_next) || !velocities(dt_next))
     return false;
   res.dt_last = dt;
   dt = dt_next;
+  return true;
+}
+
+// One cycle of a thermal-only run (SOLN 1): a thermal step, cut to land on the end time.
+bool Simulation::State::thermal_cycle_once() {
+  double step = heat->step_length(0.0);
+  if (end_time > 0.0 && t + step > end_time)
+    step = std::max(end_time - t, 1e-9 * step);
+  t += step;
+  ++cycle;
+  loads_and_temperatures();
+  if (!heat_conduction(true))
+    return false;
+  res.dt_last = step;
+  dt = heat->step_length(0.0);
   return true;
 }
 
@@ -947,6 +1025,9 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.value("nodout", next_nodout);
     a.value("rcforc", next_rcforc);
     a.value("bndout", next_bndout);
+    a.value("tprint", next_tprint);
+    a.value("heat", next_heat);
+    a.value("heat_written_at", heat_written_at);
     a.value("state_written", state_written);
   }
   {
@@ -971,6 +1052,11 @@ void Simulation::State::visit_state(core::StateArchive& a) {
   if (contact) {
     const auto scope = a.scope("contact");
     contact->visit_state(a);
+  }
+  if (heat) {
+    const auto scope = a.scope("thermal");
+    heat->visit_state(a);
+    a.value("warned", warned_thermal);
   }
 }
 
@@ -1037,7 +1123,7 @@ RunResult Simulation::run() {
       break;
     if (st.model.controls.end_cycle > 0 && st.cycle >= st.model.controls.end_cycle)
       break;
-    if (!st.cycle_once())
+    if (!(st.thermal_only ? st.thermal_cycle_once() : st.cycle_once()))
       break;
     st.write_outputs(false);
     st.sink.progress(st.t, st.end_time, st.cycle, st.dt, st.wall_before + st.wall());
@@ -1055,6 +1141,8 @@ RunResult Simulation::run() {
   if (res.ok && !res.stopped) {
     if (!st.state_written)
       st.write_outputs(true);
+    if (st.heat && st.heat_written_at != st.t)
+      st.sink.heat(st.t, st.heat->ledger());
     if (st.model.output.glstat_dt > 0.0 && st.en.time != st.t)
       st.sink.glstat(st.energies());
     // The end's checkpoint lets a restart go on past the end time (--end-time).
@@ -1064,6 +1152,11 @@ RunResult Simulation::run() {
   res.cycles = st.cycle;
   res.time = st.t;
   res.contact_searches = st.contact ? st.contact->searches() : 0;
+  if (st.heat) {
+    res.thermal_steps = st.heat->steps();
+    res.thermal_iterations = st.heat->iterations();
+    res.heat = st.heat->ledger();
+  }
   res.wall_seconds = st.wall_before + st.wall();
   res.thread_reductions = st.reductions_before + st.governor.reductions();
   res.reduced_thread_seconds = st.reduced_before + st.governor.reduced_seconds();

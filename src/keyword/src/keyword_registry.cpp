@@ -34,6 +34,8 @@ KeywordSpec mat_piecewise_linear_plasticity_keyword();
 KeywordSpec mat_024_keyword();
 KeywordSpec mat_mooney_rivlin_keyword();
 KeywordSpec mat_027_keyword();
+KeywordSpec mat_thermal_isotropic_keyword();
+KeywordSpec mat_thermal_orthotropic_keyword();
 KeywordSpec hourglass_keyword();
 KeywordSpec set_node_list_keyword();
 KeywordSpec set_part_list_keyword();
@@ -49,6 +51,9 @@ KeywordSpec boundary_prescribed_motion_set_keyword();
 KeywordSpec boundary_prescribed_motion_rigid_keyword();
 KeywordSpec boundary_temperature_node_keyword();
 KeywordSpec boundary_temperature_set_keyword();
+KeywordSpec boundary_convection_set_keyword();
+KeywordSpec boundary_flux_set_keyword();
+KeywordSpec boundary_radiation_set_keyword();
 KeywordSpec initial_velocity_generation_keyword();
 KeywordSpec initial_temperature_node_keyword();
 KeywordSpec initial_temperature_set_keyword();
@@ -62,12 +67,16 @@ KeywordSpec control_hourglass_keyword();
 KeywordSpec control_shell_keyword();
 KeywordSpec control_contact_keyword();
 KeywordSpec control_units_keyword();
+KeywordSpec control_solution_keyword();
+KeywordSpec control_thermal_solver_keyword();
+KeywordSpec control_thermal_timestep_keyword();
 KeywordSpec database_binary_d3plot_keyword();
 KeywordSpec database_binary_d3dump_keyword();
 KeywordSpec database_glstat_keyword();
 KeywordSpec database_nodout_keyword();
 KeywordSpec database_rcforc_keyword();
 KeywordSpec database_bndout_keyword();
+KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
 
 std::span<const KeywordSpec> keyword_registry() {
@@ -99,6 +108,8 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_024_keyword(),
       mat_mooney_rivlin_keyword(),
       mat_027_keyword(),
+      mat_thermal_isotropic_keyword(),
+      mat_thermal_orthotropic_keyword(),
       hourglass_keyword(),
       set_node_list_keyword(),
       set_part_list_keyword(),
@@ -114,6 +125,9 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_prescribed_motion_rigid_keyword(),
       boundary_temperature_node_keyword(),
       boundary_temperature_set_keyword(),
+      boundary_convection_set_keyword(),
+      boundary_flux_set_keyword(),
+      boundary_radiation_set_keyword(),
       initial_velocity_generation_keyword(),
       initial_temperature_node_keyword(),
       initial_temperature_set_keyword(),
@@ -127,12 +141,16 @@ std::span<const KeywordSpec> keyword_registry() {
       control_shell_keyword(),
       control_contact_keyword(),
       control_units_keyword(),
+      control_solution_keyword(),
+      control_thermal_solver_keyword(),
+      control_thermal_timestep_keyword(),
       database_binary_d3plot_keyword(),
       database_binary_d3dump_keyword(),
       database_glstat_keyword(),
       database_nodout_keyword(),
       database_rcforc_keyword(),
       database_bndout_keyword(),
+      database_tprint_keyword(),
       database_history_node_keyword(),
   };
   return kRegistry;

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "build_contact.hpp"
+#include "build_thermal.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/material/law_registry.hpp"
@@ -409,6 +410,7 @@ BuildResult build(const model::ModelDesc& desc) {
   // Contacts last: they read the final (coloured) element blocks.
   build_contacts(desc, b.m, b.out.errors, b.out.warnings);
   build_temperatures(desc, b.m, b.out.errors);
+  build_thermal(desc, b.m, b.out.errors, b.out.warnings);
   if (b.out.errors.empty())
     b.out.model = std::move(b.m);
   return std::move(b.out);

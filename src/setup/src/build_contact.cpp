@@ -547,6 +547,11 @@ void build_temperatures(const model::ModelDesc& desc, core::Model& model, Diagno
       add(id);
       return v;
     }
+    if (id == 0) {  // *INITIAL_TEMPERATURE_SET NSID 0: every node
+      for (std::size_t i = 0; i < model.node_count(); ++i)
+        v.push_back(static_cast<Index>(i));
+      return v;
+    }
     for (const auto& s : desc.node_sets)
       if (s.id == id)
         for (int n : s.ids)

@@ -216,6 +216,9 @@ std::vector<Diagnostic> validate_contact(const model::ModelDesc& model) {
               target_field(target), errors);
   };
   for (const model::InitialTemperatureDesc& i : model.initial_temperatures) {
+    // *INITIAL_TEMPERATURE_SET NSID 0 is every node of the model.
+    if (i.target == NodeTarget::kSet && i.target_id == 0)
+      continue;
     check_target(i.target, i.target_id, i.where, initial_keyword(i.target));
   }
   for (const model::BoundaryTemperatureDesc& b : model.temperature_histories) {

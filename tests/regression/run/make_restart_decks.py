@@ -9,6 +9,9 @@ restart_shell.k  the three-layer square cup (examples/square_cup: rigid punch, d
                  every 1000 cycles.
 restart_solid.k  decks/block_threads.k (576 elastic hex8, one face clamped, the other pulled,
                  a lateral initial velocity); a checkpoint every 50 cycles.
+restart_thermal.k the same block with computed temperatures (SOLN 2, a thermal step every few
+                 mechanical steps, TSF 1e5): the clamped face held at 500 K, the rest starting
+                 at 300 K; a checkpoint every 50 cycles.
 Standard library only.
 """
 
@@ -47,6 +50,20 @@ def main(argv):
     with open(os.path.join(out, "restart_solid.k"), "w") as f:
         f.write(solid)
     with_checkpoints(os.path.join(out, "restart_solid.k"), 50)
+    # Steel in mm, tonne, s: c = 5e8 mm^2/(s^2 K), k = 50 N/(s K).
+    thermal = solid.replace(
+        "         1         1         1         0         0\n",
+        "         1         1         1         0         0         0         0         1\n", 1)
+    thermal = thermal.replace(
+        "*END",
+        "*CONTROL_SOLUTION\n2\n*CONTROL_THERMAL_SOLVER\n1,0,12\n0,0,0,1e-9,0,,,1e5\n"
+        "*CONTROL_THERMAL_TIMESTEP\n0,0.5,2e-7\n*MAT_THERMAL_ISOTROPIC\n1,0.0\n5e8,50.0\n"
+        "*INITIAL_TEMPERATURE_SET\n0,300.0\n*BOUNDARY_TEMPERATURE_SET\n1,0,500.0\n*END", 1)
+    if thermal.count("*CONTROL_SOLUTION") != 1 or "0         0         1\n" not in thermal:
+        sys.exit("make_restart_decks.py: decks/block_threads.k changed: its PART card or *END")
+    with open(os.path.join(out, "restart_thermal.k"), "w") as f:
+        f.write(thermal)
+    with_checkpoints(os.path.join(out, "restart_thermal.k"), 50)
     return 0
 
 

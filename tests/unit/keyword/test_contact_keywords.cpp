@@ -339,11 +339,27 @@ TEST(InitialTemperature, NodesAndSets) {
   EXPECT_DOUBLE_EQ(t[2].temperature, 450.0);
 }
 
+TEST(InitialTemperature, SetZeroIsEveryNode) {
+  // NSID 0 (written or blank) is every node of the model: target_id stays 0 for setup.
+  const ReadResult r = read_ok(
+      "*INITIAL_TEMPERATURE_SET\n"
+      "0,300.0\n"
+      "\n"
+      "         0     310.0\n");
+  const auto& t = r.model.initial_temperatures;
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[0].target, model::NodeTarget::kSet);
+  EXPECT_EQ(t[0].target_id, 0);
+  EXPECT_DOUBLE_EQ(t[0].temperature, 300.0);
+  EXPECT_EQ(t[0].where.line, 2);
+  EXPECT_EQ(t[1].target_id, 0);
+  EXPECT_DOUBLE_EQ(t[1].temperature, 310.0);
+  EXPECT_EQ(t[1].where.line, 4);
+}
+
 TEST(InitialTemperature, Errors) {
-  expect_error("*INITIAL_TEMPERATURE_SET\n0,300.0\n", 2, "*INITIAL_TEMPERATURE_SET", "NSID",
-               "NSID = 0 (every node) is not supported");
-  expect_error("*INITIAL_TEMPERATURE_SET\n\n         0     300.0\n", 3, "*INITIAL_TEMPERATURE_SET",
-               "NSID", "every node");
+  expect_error("*INITIAL_TEMPERATURE_SET\n-1,300.0\n", 2, "*INITIAL_TEMPERATURE_SET", "NSID",
+               ">= 0");
   expect_error("*INITIAL_TEMPERATURE_NODE\n1,300.0,1\n", 2, "*INITIAL_TEMPERATURE_NODE", "LOC",
                "thermal shells");
   expect_error("*INITIAL_TEMPERATURE_NODE\n,300.0\n", 2, "*INITIAL_TEMPERATURE_NODE", "NID",

@@ -82,8 +82,6 @@ TEST(SolverKeywordErrors, NotSupportedYetNamesTheField) {
   d = single_error("*MAT_027\n1,1e-9,0.49\n");
   EXPECT_EQ(d.field, "A");
   EXPECT_TRUE(contains(d.message, "fit")) << d.message;
-  d = single_error("*PART\np\n1,1,1,0,0,0,0,3\n");
-  EXPECT_EQ(d.field, "TMID");
   d = single_error("*DATABASE_GLSTAT\n1e-4,0,5\n");
   EXPECT_EQ(d.field, "LCUR");
   d = single_error("*SET_NODE_LIST\n1,,,,,THERMAL\n1\n");

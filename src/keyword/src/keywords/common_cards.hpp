@@ -1,10 +1,13 @@
 #pragma once
 // Cards and checks shared by several keywords: the title card of _TITLE, the ID card of _ID,
-// and the "not supported yet" check for fields that must stay 0.
+// the "not supported yet" check for fields that must stay 0, and the storing of keywords read
+// once per deck.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -46,6 +49,17 @@ inline void require_zero(KeywordInput& in, int line, std::string_view field, dou
         line, std::string(field),
         fmt::format("{} = {} ({}) is not supported yet; leave it blank or 0", field, value, what));
   }
+}
+
+/// Stores a once-per-deck keyword: the last one read wins, with a warning naming the first.
+template <typename Desc>
+void store_once(KeywordInput& in, std::optional<Desc>& slot, Desc desc) {
+  if (slot) {
+    in.warn(in.keyword().line, "",
+            fmt::format("{} given again: this one replaces the one at {}:{}",
+                        in.keyword().display(), slot->where.file, slot->where.line));
+  }
+  slot = std::move(desc);
 }
 
 /// True when a data line that is not blank is left in the block.

@@ -8,17 +8,6 @@
 namespace plyform::keyword {
 namespace {
 
-/// Stores a once-per-deck keyword: the last one read wins, with a warning naming the first.
-template <typename Desc>
-void store_once(KeywordInput& in, std::optional<Desc>& slot, Desc desc) {
-  if (slot) {
-    in.warn(in.keyword().line, "",
-            fmt::format("{} given again: this one replaces the one at {}:{}",
-                        in.keyword().display(), slot->where.file, slot->where.line));
-  }
-  slot = std::move(desc);
-}
-
 // --- *CONTROL_TERMINATION
 constexpr std::array kTerminationFields{
     FieldSpec{.name = "ENDTIM",

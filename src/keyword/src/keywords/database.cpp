@@ -1,5 +1,5 @@
-// *DATABASE_BINARY_D3PLOT, *DATABASE_GLSTAT, *DATABASE_NODOUT, *DATABASE_RCFORC,
-// *DATABASE_HISTORY_NODE(_ID).
+// *DATABASE_BINARY_D3PLOT, *DATABASE_BINARY_D3DUMP, *DATABASE_GLSTAT, *DATABASE_NODOUT,
+// *DATABASE_RCFORC, *DATABASE_BNDOUT, *DATABASE_TPRINT, *DATABASE_HISTORY_NODE(_ID).
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -186,6 +186,23 @@ void read_ascii(KeywordInput& in, std::string_view name) {
   in.model().ascii_outputs.push_back(std::move(d));
 }
 
+// --- *DATABASE_TPRINT: the card of the ASCII outputs, but once per deck (it sets the interval
+// of two files, tprint.csv and heat.csv, rather than naming one output among several).
+void read_tprint(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (DT BINARY LCUR IOOPT)");
+  }
+  const CardValues v = in.read(kAsciiCards[0], *line);
+  const model::DatabaseTprintDesc d{.dt = v.real("DT"),
+                                    .binary = v.integer("BINARY"),
+                                    .lcur = v.integer("LCUR"),
+                                    .ioopt = v.integer("IOOPT"),
+                                    .where = in.where(line->line)};
+  require_zero(in, line->line, "LCUR", d.lcur, "a curve of the output interval");
+  store_once(in, in.model().tprint, d);
+}
+
 // --- *DATABASE_HISTORY_NODE(_ID)
 constexpr std::string_view kHistoryId = "node id (blank or 0: none)";
 constexpr FieldSpec history_field() {
@@ -302,6 +319,18 @@ KeywordSpec database_bndout_keyword() {
           .summary =
               "The interval of bndout.csv (the force each prescribed-motion node receives "
               "from its constraint: the load it takes to impose the motion)."};
+}
+
+KeywordSpec database_tprint_keyword() {
+  return {.name = "DATABASE_TPRINT",
+          .options = kNoOptions,
+          .handler = read_tprint,
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of tprint.csv (the temperatures of the *DATABASE_HISTORY_NODE "
+              "nodes) and heat.csv (the heat ledger; without *DATABASE_TPRINT it follows the "
+              "glstat interval) when temperatures are computed (docs/thermal.md). Given twice, "
+              "the last one is used (with a warning)."};
 }
 
 KeywordSpec database_history_node_keyword() {

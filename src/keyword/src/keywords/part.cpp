@@ -50,8 +50,10 @@ constexpr std::array kCard1Fields{
               .description = "adaptivity: must be 0 (not supported)"},
     FieldSpec{.name = "TMID",
               .type = FieldType::kInteger,
+              .min_value = 0,
               .unit = "-",
-              .description = "thermal material id: must be 0 (not supported yet)"},
+              .description = "thermal material id (*MAT_THERMAL_...; 0: the part takes no part "
+                             "in heat conduction)"},
 };
 constexpr std::array kCards{
     CardSpec{.title = "Heading card", .fields = kHeadingFields, .presence = "required"},
@@ -85,7 +87,6 @@ void read_part(KeywordInput& in) {
     part.where = in.where(line->line);
     require_zero(in, line->line, "EOSID", part.eos_id, "an equation of state");
     require_zero(in, line->line, "ADPOPT", part.adpopt, "adaptive remeshing");
-    require_zero(in, line->line, "TMID", part.thermal_material_id, "a thermal material");
     in.model().parts.push_back(std::move(part));
   } while (has_more_cards(in));
 }
@@ -98,7 +99,8 @@ KeywordSpec part_keyword() {
           .handler = read_part,
           .cards = kCards,
           .summary =
-              "A part: its section, material and hourglass control. The heading card "
+              "A part: its section, material, hourglass control and thermal material "
+              "(TMID, used when *CONTROL_SOLUTION computes temperatures). The heading card "
               "always comes first (LS-DYNA has no _TITLE option here). Options such as "
               "_INERTIA or _CONTACT are not supported."};
 }

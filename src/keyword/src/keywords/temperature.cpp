@@ -1,6 +1,7 @@
 // *INITIAL_TEMPERATURE_NODE/_SET and *BOUNDARY_TEMPERATURE_NODE/_SET: nodal temperatures at
-// t = 0 and prescribed temperature histories (plyform has no heat conduction: temperatures are
-// given, and feed the temperature-dependent laws).
+// t = 0 and prescribed temperature histories. With *CONTROL_SOLUTION SOLN 1 or 2 plyform
+// computes the temperatures (docs/thermal.md): these are its initial and boundary conditions;
+// with SOLN 0 the temperatures stay as given here.
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -37,7 +38,7 @@ constexpr std::array kInitialSetFields{
               .type = FieldType::kInteger,
               .min_value = 0,
               .unit = "-",
-              .description = "node set id (0, every node, is not supported)"},
+              .description = "node set id (0: every node of the model)"},
     FieldSpec{.name = "TEMP", .unit = "temperature", .description = "temperature at t = 0"},
     loc_field(),
 };
@@ -106,10 +107,6 @@ void read_initial(KeywordInput& in, model::NodeTarget target, const CardSpec& ca
     t.temperature = v.real("TEMP");
     t.loc = v.integer("LOC");
     t.where = in.where(line->line);
-    if (set && t.target_id == 0) {
-      in.fail(line->line, "NSID",
-              "NSID = 0 (every node) is not supported; give a node set (*SET_NODE_LIST)");
-    }
     in.model().initial_temperatures.push_back(t);
   }
 }
@@ -156,8 +153,8 @@ KeywordSpec initial_temperature_set_keyword() {
           [](KeywordInput& in) { read_initial(in, model::NodeTarget::kSet, kInitialSetCards[0]); },
       .cards = kInitialSetCards,
       .summary =
-          "The temperature of every node of a node set at t = 0. NSID = 0 (every "
-          "node of the model) is an error."};
+          "The temperature of every node of a node set at t = 0; NSID = 0 sets every "
+          "node of the model."};
 }
 
 KeywordSpec boundary_temperature_node_keyword() {

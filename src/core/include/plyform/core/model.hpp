@@ -10,6 +10,7 @@
 #include "plyform/core/contact.hpp"
 #include "plyform/core/load_curve.hpp"
 #include "plyform/core/material.hpp"
+#include "plyform/core/thermal.hpp"
 #include "plyform/core/types.hpp"
 
 namespace plyform::core {
@@ -71,6 +72,7 @@ struct Part {
   GlobalId id = 0;
   std::string title;
   Index material = 0;
+  Index thermal_material = -1;  ///< index into Model::thermal_materials (-1: no conduction)
 };
 
 /// Degrees of freedom as bits: x, y, z translations and rotations about x, y, z (shell nodes).
@@ -141,6 +143,7 @@ struct OutputRequests {
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
   long d3dump_cycles = 0;            ///< *DATABASE_BINARY_D3DUMP CYCL (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
+  double tprint_dt = 0.0;            ///< *DATABASE_TPRINT (0: none): tprint.csv, heat.csv
 };
 
 struct Model {
@@ -165,6 +168,10 @@ struct Model {
   // Temperatures (the law reads the slave node's): *INITIAL_TEMPERATURE, *BOUNDARY_TEMPERATURE.
   std::vector<double> temperature0;  ///< per node at t = 0 (empty: 0 everywhere)
   std::vector<TemperatureHistory> temperature_histories;
+  // Heat transfer: *CONTROL_SOLUTION SOLN 1 or 2 (thermal.hpp).
+  ThermalControls thermal;
+  std::vector<ThermalMaterial> thermal_materials;
+  std::vector<HeatBoundary> heat_boundaries;
   // Contact interfaces, in deck order.
   std::vector<ContactInterface> contacts;
   Controls controls;

@@ -18,6 +18,7 @@
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
 #include "plyform/rigid/rigid_bodies.hpp"
+#include "plyform/thermal/heat_solver.hpp"
 
 namespace plyform::engine {
 
@@ -61,6 +62,11 @@ class OutputSink {
   /// At the bndout interval: the reactions of the prescribed-motion nodes are in
   /// `s.nodes->rx, ry, rz` (the force the constraint applies to each node).
   virtual void boundary_forces(const Snapshot& /*s*/) {}
+  /// When temperatures are computed, at the tprint interval (the glstat interval without
+  /// *DATABASE_TPRINT) and at the end: the heat books since t = 0.
+  virtual void heat(double /*time*/, const thermal::HeatLedger& /*ledger*/) {}
+  /// At the tprint interval: the history nodes' temperatures are in `s.nodes->temperature`.
+  virtual void temperatures(const Snapshot& /*s*/) {}
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
@@ -111,6 +117,11 @@ struct RunResult {
   bool restarted = false;  ///< continued from a checkpoint (Simulation::restore)
   double restart_time = 0.0;
   long restart_cycle = 0;
+  /// Heat transfer (*CONTROL_SOLUTION SOLN 1 or 2): thermal steps, conjugate-gradient
+  /// iterations (solver 12), and the books at the end.
+  long thermal_steps = 0;
+  long thermal_iterations = 0;
+  thermal::HeatLedger heat;
 };
 
 /// The run of one model. It owns the whole state of the run (simulation.cpp, `State`):

@@ -27,6 +27,7 @@
 #include "plyform/model/section_solid_desc.hpp"
 #include "plyform/model/set_desc.hpp"
 #include "plyform/model/temperature_desc.hpp"
+#include "plyform/model/thermal_desc.hpp"
 #include "plyform/model/user_interface_friction_desc.hpp"
 
 namespace plyform::model {
@@ -72,6 +73,14 @@ struct ModelDesc {
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
   std::vector<InitialTemperatureDesc> initial_temperatures;
   std::vector<BoundaryTemperatureDesc> temperature_histories;
+
+  // Heat transfer (computed temperatures)
+  std::optional<ControlSolutionDesc> control_solution;
+  std::optional<ControlThermalSolverDesc> thermal_solver;
+  std::optional<ControlThermalTimestepDesc> thermal_timestep;
+  std::vector<MatThermalDesc> thermal_materials;
+  std::vector<HeatBoundaryDesc> heat_boundaries;
+  std::optional<DatabaseTprintDesc> tprint;
 
   // Control and output
   std::optional<ControlTerminationDesc> termination;

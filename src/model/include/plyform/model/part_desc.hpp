@@ -16,7 +16,7 @@ struct PartDesc {
   int hourglass_id = 0;         ///< HGID (0: *CONTROL_HOURGLASS defaults)
   int grav = 0;                 ///< GRAV, as written
   int adpopt = 0;               ///< ADPOPT (must be 0: adaptivity is not supported)
-  int thermal_material_id = 0;  ///< TMID (must be 0: thermal materials are not supported yet)
+  int thermal_material_id = 0;  ///< TMID (*MAT_THERMAL_...; 0: no heat conduction in the part)
   SourceLocation where;         ///< the line of card 1 (PID SECID MID ...)
 };
 

@@ -5,11 +5,11 @@
 
 namespace plyform::model {
 
-/// One card of *INITIAL_TEMPERATURE_NODE / _SET: the temperature of a node or of every node of
-/// a set at t = 0.
+/// One card of *INITIAL_TEMPERATURE_NODE / _SET: the temperature of a node, of every node of a
+/// set, or (_SET with NSID 0) of every node of the model at t = 0.
 struct InitialTemperatureDesc {
   NodeTarget target = NodeTarget::kNode;
-  int target_id = 0;         ///< NID or NSID
+  int target_id = 0;         ///< NID or NSID (NSID 0: every node)
   double temperature = 0.0;  ///< TEMP
   int loc = 0;               ///< LOC: shell surface (thermal shells); must be 0
   SourceLocation where;      ///< the card line

@@ -1,0 +1,546 @@
+#include "plyform/thermal/heat_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include "plyform/thermal/element_conductance.hpp"
+
+namespace plyform::thermal {
+namespace {
+
+using core::Index;
+using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, int indices
+
+[[nodiscard]] std::size_t idx(Index i) {
+  return static_cast<std::size_t>(i);
+}
+
+double curve_or_constant(const core::Model& m, Index curve, double mult, double t) {
+  return curve >= 0 ? mult * m.curves[idx(curve)](t) : mult;
+}
+
+bool is_triangle(const Index* c) {
+  return c[3] == c[2];
+}
+
+}  // namespace
+
+struct HeatSolver::Matrices {
+  SparseMatrix K;             // conductance, unscaled by the speed-up factor
+  SparseMatrix A;             // the step's matrix: C / dt + theta (TSF K + H)
+  std::vector<int> diagonal;  // position of each unknown's diagonal entry in the values
+  Eigen::SimplicialLDLT<SparseMatrix> direct;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper,
+                           Eigen::DiagonalPreconditioner<double>>
+      iterative;
+  bool analysed = false;
+  // Scratch of one step.
+  Eigen::VectorXd t, kt, b, dt, guess;
+  std::vector<double> s_conv, h_conv, s_rad, h_rad, s_flux, s_gen;
+
+  // The position of entry (row, col) in the values (-1: not in the pattern).
+  [[nodiscard]] int entry(const SparseMatrix& m, int row, int col) const {
+    const int* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
+    const int* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
+    const int* it = std::lower_bound(begin, end, row);
+    return it != end && *it == row ? static_cast<int>(it - m.innerIndexPtr()) : -1;
+  }
+};
+
+HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
+    : model_(model), m_(std::make_unique<Matrices>()) {
+  const std::size_t n = model.node_count();
+  unknown_.assign(n, -1);
+  const auto conducts = [&](Index part) { return model.parts[idx(part)].thermal_material >= 0; };
+  std::vector<double> capacity(n, 0.0);
+  const auto node_xyz = [&](Index i) {
+    return Vec3{model.x0[idx(i)], model.y0[idx(i)], model.z0[idx(i)]};
+  };
+  for (const core::SolidBlock& b : model.solid_blocks) {
+    if (!conducts(b.part))
+      continue;
+    const core::ThermalMaterial& tm =
+        model.thermal_materials[idx(model.parts[idx(b.part)].thermal_material)];
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[8 * e];
+      std::array<Vec3, 8> x;
+      for (std::size_t k = 0; k < 8; ++k)
+        x[k] = node_xyz(c[k]);
+      const double share = tm.density * tm.heat_capacity * hex8_volume(x) / 8.0;
+      for (std::size_t k = 0; k < 8; ++k)
+        capacity[idx(c[k])] += share;
+    }
+  }
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    if (!conducts(b.part))
+      continue;
+    const core::ThermalMaterial& tm =
+        model.thermal_materials[idx(model.parts[idx(b.part)].thermal_material)];
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[4 * e];
+      const bool tri = is_triangle(c);
+      std::array<Vec3, 4> x;
+      for (std::size_t k = 0; k < 4; ++k)
+        x[k] = node_xyz(c[k]);
+      const int corners = tri ? 3 : 4;
+      double t0 = 0.0;
+      for (int k = 0; k < corners; ++k)
+        t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
+      const double share = tm.density * tm.heat_capacity * face_area(x, tri) * t0 / corners;
+      for (int k = 0; k < corners; ++k)
+        capacity[idx(c[k])] += share;
+    }
+  }
+  // Every node of a conducting element is an unknown, in node order.
+  const auto mark = [&](const auto& blocks, std::size_t per) {
+    for (const auto& b : blocks)
+      if (conducts(b.part))
+        for (Index node : b.connectivity)
+          unknown_[idx(node)] = 0;
+    (void)per;
+  };
+  mark(model.solid_blocks, 8);
+  mark(model.shell_blocks, 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (unknown_[i] == 0) {
+      unknown_[i] = static_cast<Index>(nodes_.size());
+      nodes_.push_back(static_cast<Index>(i));
+      capacity_.push_back(capacity[i]);
+    }
+  }
+  const std::size_t u = nodes_.size();
+  // The pattern: every pair of nodes of an element, and every diagonal.
+  std::vector<Eigen::Triplet<double>> pairs;
+  for (std::size_t i = 0; i < u; ++i)
+    pairs.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.0);
+  const auto add_pairs = [&](const auto& blocks, std::size_t per) {
+    for (const auto& b : blocks) {
+      if (!conducts(b.part))
+        continue;
+      for (std::size_t e = 0; e < b.size(); ++e)
+        for (std::size_t i = 0; i < per; ++i)
+          for (std::size_t j = 0; j < per; ++j)
+            pairs.emplace_back(static_cast<int>(unknown_[idx(b.connectivity[per * e + i])]),
+                               static_cast<int>(unknown_[idx(b.connectivity[per * e + j])]), 0.0);
+    }
+  };
+  add_pairs(model.solid_blocks, 8);
+  add_pairs(model.shell_blocks, 4);
+  Matrices& m = *m_;
+  m.K.resize(static_cast<int>(u), static_cast<int>(u));
+  m.K.setFromTriplets(pairs.begin(), pairs.end());
+  m.K.makeCompressed();
+  std::fill(m.K.valuePtr(), m.K.valuePtr() + m.K.nonZeros(), 0.0);
+  m.A = m.K;
+  m.diagonal.resize(u);
+  for (std::size_t i = 0; i < u; ++i)
+    m.diagonal[i] = m.entry(m.K, static_cast<int>(i), static_cast<int>(i));
+  for (auto* v : {&m.s_conv, &m.h_conv, &m.s_rad, &m.h_rad, &m.s_flux, &m.s_gen})
+    v->assign(u, 0.0);
+  m.t.resize(static_cast<Eigen::Index>(u));
+  m.dt.setZero(static_cast<Eigen::Index>(u));
+
+  // Heat generation: each element's volume share, per material.
+  for (const core::SolidBlock& b : model.solid_blocks) {
+    if (!conducts(b.part))
+      continue;
+    const Index mat = model.parts[idx(b.part)].thermal_material;
+    if (model.thermal_materials[idx(mat)].generation == 0.0)
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[8 * e];
+      std::array<Vec3, 8> x;
+      for (std::size_t k = 0; k < 8; ++k)
+        x[k] = node_xyz(c[k]);
+      const double share = hex8_volume(x) / 8.0;
+      for (std::size_t k = 0; k < 8; ++k) {
+        generation_.push_back({unknown_[idx(c[k])], share});
+        generation_material_.push_back(mat);
+      }
+    }
+  }
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    if (!conducts(b.part))
+      continue;
+    const Index mat = model.parts[idx(b.part)].thermal_material;
+    if (model.thermal_materials[idx(mat)].generation == 0.0)
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[4 * e];
+      const bool tri = is_triangle(c);
+      std::array<Vec3, 4> x;
+      for (std::size_t k = 0; k < 4; ++k)
+        x[k] = node_xyz(c[k]);
+      const int corners = tri ? 3 : 4;
+      double t0 = 0.0;
+      for (int k = 0; k < corners; ++k)
+        t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
+      const double share = face_area(x, tri) * t0 / corners;
+      for (int k = 0; k < corners; ++k) {
+        generation_.push_back({unknown_[idx(c[k])], share});
+        generation_material_.push_back(mat);
+      }
+    }
+  }
+
+  // Prescribed temperatures of conducting nodes; those active at t = 0 hold from the start.
+  for (std::size_t h = 0; h < model.temperature_histories.size(); ++h) {
+    const core::TemperatureHistory& th = model.temperature_histories[h];
+    const Index un = unknown_[idx(th.node)];
+    if (un < 0)
+      continue;
+    prescribed_.push_back({un, h});
+    if (th.birth <= 0.0)
+      temperature[idx(th.node)] = curve_or_constant(model, th.curve, th.scale, 0.0);
+  }
+  temperature_.resize(u);
+  for (std::size_t i = 0; i < u; ++i)
+    temperature_[i] = temperature[idx(nodes_[i])];
+  initial_ = temperature_;
+  change_.assign(u, 0.0);
+  next_ = model.thermal.dt_initial;
+}
+
+HeatSolver::~HeatSolver() = default;
+
+double HeatSolver::step_length(double dt_mech) const {
+  const core::ThermalControls& c = model_.thermal;
+  if (!c.variable_step)
+    return c.dt_initial;
+  const double lo = c.dt_min > 0.0 ? c.dt_min : dt_mech;
+  const double hi = c.dt_max > 0.0  ? c.dt_max
+                    : dt_mech > 0.0 ? 100.0 * dt_mech
+                                    : std::numeric_limits<double>::infinity();
+  return std::clamp(next_, lo, std::max(lo, hi));
+}
+
+// The conductance on the current geometry, colour by colour (a colour's elements share no
+// node, hence no matrix entry: they add in parallel without races).
+void HeatSolver::assemble(const Geometry& g, double /*scale*/) {
+  Matrices& m = *m_;
+  double* values = m.K.valuePtr();
+  std::fill(values, values + m.K.nonZeros(), 0.0);
+  const auto at = [&](Index i) {
+    const double* p = g.xyz + g.stride * idx(i);
+    return Vec3{p[0], p[1], p[2]};
+  };
+  const bool one_point = model_.thermal.one_point;
+  for (const core::SolidBlock& b : model_.solid_blocks) {
+    const Index tmat = model_.parts[idx(b.part)].thermal_material;
+    if (tmat < 0)
+      continue;
+    const core::ThermalMaterial& tm = model_.thermal_materials[idx(tmat)];
+    for (std::size_t colour = 0; colour + 1 < b.colour_start.size(); ++colour) {
+      const long first = static_cast<long>(b.colour_start[colour]);
+      const long last = static_cast<long>(b.colour_start[colour + 1]);
+#pragma omp parallel for schedule(static)
+      for (long le = first; le < last; ++le) {
+        const Index* c = &b.connectivity[8 * static_cast<std::size_t>(le)];
+        std::array<Vec3, 8> x;
+        for (std::size_t k = 0; k < 8; ++k)
+          x[k] = at(c[k]);
+        const Tensor3 k = conductivity_tensor(tm, x[0], x[1], x[3], 1.0);
+        double ke[8][8];
+        hex8_conductance(x, k, one_point, ke);
+        for (std::size_t j = 0; j < 8; ++j) {
+          const int col = static_cast<int>(unknown_[idx(c[j])]);
+          for (std::size_t i = 0; i < 8; ++i)
+            values[m.entry(m.K, static_cast<int>(unknown_[idx(c[i])]), col)] += ke[i][j];
+        }
+      }
+    }
+  }
+  for (std::size_t bi = 0; bi < model_.shell_blocks.size(); ++bi) {
+    const core::ShellBlock& b = model_.shell_blocks[bi];
+    const Index tmat = model_.parts[idx(b.part)].thermal_material;
+    if (tmat < 0)
+      continue;
+    const core::ThermalMaterial& tm = model_.thermal_materials[idx(tmat)];
+    const double* current = bi < g.shell_thickness.size() ? g.shell_thickness[bi] : nullptr;
+    for (std::size_t colour = 0; colour + 1 < b.colour_start.size(); ++colour) {
+      const long first = static_cast<long>(b.colour_start[colour]);
+      const long last = static_cast<long>(b.colour_start[colour + 1]);
+#pragma omp parallel for schedule(static)
+      for (long le = first; le < last; ++le) {
+        const auto e = static_cast<std::size_t>(le);
+        const Index* c = &b.connectivity[4 * e];
+        const bool tri = is_triangle(c);
+        std::array<Vec3, 4> x;
+        for (std::size_t k = 0; k < 4; ++k)
+          x[k] = at(c[k]);
+        const int corners = tri ? 3 : 4;
+        double t = 0.0;
+        if (current != nullptr) {
+          t = current[e];
+        } else {
+          for (int k = 0; k < corners; ++k)
+            t += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
+        }
+        const Tensor3 k = conductivity_tensor(tm, x[0], x[1], x[3], 1.0);
+        double ke[4][4];
+        shell_conductance(x, tri, k, t, ke);
+        for (int j = 0; j < corners; ++j) {
+          const int col = static_cast<int>(unknown_[idx(c[j])]);
+          for (int i = 0; i < corners; ++i)
+            values[m.entry(m.K, static_cast<int>(unknown_[idx(c[i])]), col)] += ke[i][j];
+        }
+      }
+    }
+  }
+}
+
+StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> temperature,
+                               const MechanicalHeat& heat, double /*dt_mech*/) {
+  StepReport rep;
+  const double h = t1 - time_;
+  if (!(h > 0.0))
+    return rep;
+  const core::ThermalControls& c = model_.thermal;
+  Matrices& m = *m_;
+  const std::size_t u = nodes_.size();
+  const bool steady = c.steady;
+  const double theta = steady ? 1.0 : c.theta;
+  const double t_theta = time_ + theta * h;  // where the step's sources are evaluated
+  const double scale =
+      c.tsf_curve >= 0 ? model_.curves[idx(c.tsf_curve)](t_theta) : std::max(c.tsf, 0.0);
+
+  if (since_assembly_ == 0 || since_assembly_ >= std::max(1, c.reassemble_every)) {
+    assemble(g, scale);
+    since_assembly_ = 0;
+  }
+  ++since_assembly_;
+
+  for (std::size_t i = 0; i < u; ++i)
+    m.t[static_cast<Eigen::Index>(i)] = temperature_[i];
+  m.kt = scale * (m.K * m.t);
+
+  // Faces: convection, radiation (linearized about T_n) and flux, lumped on the nodes.
+  for (auto* v : {&m.s_conv, &m.h_conv, &m.s_rad, &m.h_rad, &m.s_flux, &m.s_gen})
+    std::fill(v->begin(), v->end(), 0.0);
+  const auto at = [&](Index i) {
+    const double* p = g.xyz + g.stride * idx(i);
+    return Vec3{p[0], p[1], p[2]};
+  };
+  for (const core::HeatBoundary& hb : model_.heat_boundaries) {
+    const double f = curve_or_constant(model_, hb.curve, hb.mult, t_theta) * scale;
+    const double ambient = curve_or_constant(model_, hb.ambient_curve, hb.ambient_mult, t_theta);
+    for (std::size_t face = 0; face * 4 < hb.faces.size(); ++face) {
+      const Index* fn = &hb.faces[4 * face];
+      const bool tri = is_triangle(fn);
+      std::array<Vec3, 4> x;
+      for (std::size_t k = 0; k < 4; ++k)
+        x[k] = at(fn[k]);
+      const int corners = tri ? 3 : 4;
+      const double share = face_area(x, tri) / corners;
+      for (int k = 0; k < corners; ++k) {
+        const Index un = unknown_[idx(fn[k])];
+        if (un < 0)
+          continue;
+        const std::size_t q = idx(un);
+        const double tn = temperature_[q];
+        switch (hb.kind) {
+          case core::HeatBoundaryKind::convection:
+            m.s_conv[q] += f * share * (ambient - tn);
+            m.h_conv[q] += theta * f * share;
+            break;
+          case core::HeatBoundaryKind::radiation: {
+            const double t2 = tn * tn, a2 = ambient * ambient;
+            m.s_rad[q] += f * share * (a2 * a2 - t2 * t2);
+            m.h_rad[q] += theta * 4.0 * f * share * t2 * tn;
+            break;
+          }
+          case core::HeatBoundaryKind::flux:
+            m.s_flux[q] += f * hb.node_mult[static_cast<std::size_t>(k)] * share;
+            break;
+        }
+      }
+    }
+  }
+  for (std::size_t k = 0; k < generation_.size(); ++k) {
+    const core::ThermalMaterial& tm = model_.thermal_materials[idx(generation_material_[k])];
+    m.s_gen[idx(generation_[k].first)] +=
+        curve_or_constant(model_, tm.generation_curve, tm.generation, t_theta) * scale *
+        generation_[k].second;
+  }
+  double mech_contact = 0.0, mech_friction = 0.0, mech_plastic = 0.0;
+  m.b.resize(static_cast<Eigen::Index>(u));
+  for (std::size_t i = 0; i < u; ++i) {
+    double mech = 0.0;
+    const std::size_t node = idx(nodes_[i]);
+    if (heat.contact != nullptr)
+      mech += heat.contact[node], mech_contact += heat.contact[node];
+    if (heat.friction != nullptr)
+      mech += heat.friction[node], mech_friction += heat.friction[node];
+    if (heat.plastic != nullptr)
+      mech += heat.plastic[node], mech_plastic += heat.plastic[node];
+    m.b[static_cast<Eigen::Index>(i)] = m.s_conv[i] + m.s_rad[i] + m.s_flux[i] + m.s_gen[i] +
+                                        mech / h - m.kt[static_cast<Eigen::Index>(i)];
+  }
+
+  // A = C / h + theta (TSF K + H).
+  m.A = m.K;  // same pattern
+  double* a = m.A.valuePtr();
+  const double ks = theta * scale;
+  for (Eigen::Index k = 0; k < m.A.nonZeros(); ++k)
+    a[k] *= ks;
+  for (std::size_t i = 0; i < u; ++i)
+    a[m.diagonal[i]] += (steady ? 0.0 : capacity_[i] / h) + m.h_conv[i] + m.h_rad[i];
+
+  // Prescribed temperatures: their change is known; their columns move to the right-hand
+  // side (the matrix stays symmetric), and what holding them takes is the residual of their
+  // rows in the full system.
+  struct Held {
+    std::size_t unknown;
+    double change;
+    double b;
+    double diagonal;
+    std::vector<std::pair<int, double>> column;
+  };
+  std::vector<Held> held;
+  for (const auto& [un, hi] : prescribed_) {
+    const core::TemperatureHistory& th = model_.temperature_histories[hi];
+    if (t1 < th.birth || t1 > th.death)
+      continue;
+    const std::size_t q = idx(un);
+    Held x{q,
+           curve_or_constant(model_, th.curve, th.scale, t1) - temperature_[q],
+           m.b[static_cast<Eigen::Index>(q)],
+           a[m.diagonal[q]],
+           {}};
+    const int col = static_cast<int>(q);
+    for (int k = m.A.outerIndexPtr()[col]; k < m.A.outerIndexPtr()[col + 1]; ++k)
+      if (m.A.innerIndexPtr()[k] != col)
+        x.column.push_back({m.A.innerIndexPtr()[k], a[k]});
+    held.push_back(std::move(x));
+  }
+  for (const Held& x : held) {
+    const int col = static_cast<int>(x.unknown);
+    for (const auto& [row, v] : x.column) {
+      m.b[row] -= v * x.change;
+      a[m.entry(m.A, row, col)] = 0.0;
+      a[m.entry(m.A, col, row)] = 0.0;
+    }
+  }
+  for (const Held& x : held)
+    m.b[static_cast<Eigen::Index>(x.unknown)] = x.diagonal * x.change;
+
+  if (c.solver == 12) {
+    if (!m.analysed) {
+      m.iterative.analyzePattern(m.A);
+      m.analysed = true;
+    }
+    m.iterative.factorize(m.A);
+    m.iterative.setMaxIterations(std::max(1, c.max_iterations));
+    const double bnorm = m.b.norm();
+    m.iterative.setTolerance(bnorm > 0.0 ? std::max(c.rel_tol, c.abs_tol / bnorm) : c.rel_tol);
+    m.guess.resize(static_cast<Eigen::Index>(u));
+    const double grow = last_dt_ > 0.0 ? h / last_dt_ : 1.0;
+    for (std::size_t i = 0; i < u; ++i)
+      m.guess[static_cast<Eigen::Index>(i)] = change_[i] * grow;
+    for (const Held& x : held)
+      m.guess[static_cast<Eigen::Index>(x.unknown)] = x.change;
+    m.dt = bnorm > 0.0 ? Eigen::VectorXd(m.iterative.solveWithGuess(m.b, m.guess))
+                       : Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u));
+    rep.iterations = static_cast<int>(m.iterative.iterations());
+    rep.converged = bnorm == 0.0 || m.iterative.info() == Eigen::Success;
+    iterations_ += rep.iterations;
+  } else {
+    if (!m.analysed) {
+      m.direct.analyzePattern(m.A);
+      m.analysed = true;
+    }
+    m.direct.factorize(m.A);
+    if (m.direct.info() != Eigen::Success) {
+      rep.ok = false;
+      rep.error = "the thermal matrix is not positive definite at t = " + std::to_string(t1) +
+                  " (a part with no capacity, or a negative conductivity)";
+      return rep;
+    }
+    m.dt = m.direct.solve(m.b);
+  }
+
+  // The books of the step.
+  HeatLedger step;
+  for (std::size_t i = 0; i < u; ++i) {
+    const double d = m.dt[static_cast<Eigen::Index>(i)];
+    if (!std::isfinite(d)) {
+      rep.ok = false;
+      rep.error = "non-finite temperature at node " +
+                  std::to_string(model_.node_id[idx(nodes_[i])]) + " at t = " + std::to_string(t1);
+      return rep;
+    }
+    step.convection += h * (m.s_conv[i] - m.h_conv[i] * d);
+    step.radiation += h * (m.s_rad[i] - m.h_rad[i] * d);
+    step.flux += h * m.s_flux[i];
+    step.generation += h * m.s_gen[i];
+  }
+  for (const Held& x : held) {
+    double r = x.diagonal * x.change - x.b;
+    for (const auto& [row, v] : x.column)
+      r += v * m.dt[row];
+    step.prescribed += h * r;
+  }
+  step.contact = mech_contact;
+  step.friction = mech_friction;
+  step.plastic = mech_plastic;
+  ledger_.contact += step.contact;
+  ledger_.friction += step.friction;
+  ledger_.plastic += step.plastic;
+  ledger_.convection += step.convection;
+  ledger_.radiation += step.radiation;
+  ledger_.flux += step.flux;
+  ledger_.generation += step.generation;
+  ledger_.prescribed += step.prescribed;
+  ledger_.moved += std::abs(step.contact) + std::abs(step.friction) + std::abs(step.plastic) +
+                   std::abs(step.convection) + std::abs(step.radiation) + std::abs(step.flux) +
+                   std::abs(step.generation) + std::abs(step.prescribed);
+
+  std::vector<char> is_held(held.empty() ? 0 : u, 0);
+  for (const Held& x : held)
+    is_held[x.unknown] = 1;
+  double stored = 0.0;
+  for (std::size_t i = 0; i < u; ++i) {
+    const double d = m.dt[static_cast<Eigen::Index>(i)];
+    temperature_[i] += d;
+    change_[i] = d;
+    if (held.empty() || !is_held[i])
+      rep.max_change = std::max(rep.max_change, std::abs(d));
+    temperature[idx(nodes_[i])] = temperature_[i];
+    stored += capacity_[i] * (temperature_[i] - initial_[i]);
+  }
+  ledger_.stored = stored;
+  time_ = t1;
+  last_dt_ = h;
+  ++steps_;
+  if (c.variable_step) {
+    if (rep.max_change > c.dtemp)
+      next_ = h * c.tscp;
+    else if (rep.max_change < 0.5 * c.dtemp)
+      next_ = h * 1.25;
+    else
+      next_ = h;
+  }
+  return rep;
+}
+
+void HeatSolver::visit_state(core::StateArchive& a) {
+  a.fixed("temperature", std::span<double>(temperature_));
+  a.fixed("change", std::span<double>(change_));
+  a.fixed("conductance",
+          std::span<double>(m_->K.valuePtr(), static_cast<std::size_t>(m_->K.nonZeros())));
+  a.value("time", time_);
+  a.value("next", next_);
+  a.value("last_dt", last_dt_);
+  a.value("steps", steps_);
+  a.value("iterations", iterations_);
+  a.value("since_assembly", since_assembly_);
+  a.value("ledger", ledger_);
+}
+
+}  // namespace plyform::thermal
