@@ -152,6 +152,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   summary.added_mass = result.added_mass;
   summary.added_mass_ratio =
       result.physical_mass > 0.0 ? result.added_mass / result.physical_mass : 0.0;
+  summary.thermal_steps = result.thermal_steps;
+  summary.thermal_iterations = result.thermal_iterations;
+  summary.heat_stored = result.heat.stored;
+  summary.heat_entered = result.heat.entered();
   summary.warnings = result.warnings;
   output::write_summary_json(outdir / "summary.json", summary);
 

@@ -151,6 +151,10 @@ std::string summary_json_text(const RunSummary& s) {
   integer("threads", s.threads);
   real("restarted_at", s.restarted_at);
   text("checkpoint", s.checkpoint);
+  integer("thermal_steps", s.thermal_steps);
+  integer("thermal_iterations", s.thermal_iterations);
+  real("heat_stored", s.heat_stored);
+  real("heat_entered", s.heat_entered);
   key("warnings");
   if (s.warnings.empty()) {
     out += "[]\n";

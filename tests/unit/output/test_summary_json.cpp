@@ -281,6 +281,10 @@ TEST(SummaryJson, ExpectedText) {
   "threads": 2,
   "restarted_at": null,
   "checkpoint": "",
+  "thermal_steps": 0,
+  "thermal_iterations": 0,
+  "heat_stored": 0,
+  "heat_entered": 0,
   "warnings": [
     "line one\nline \"two\"",
     "tab\there, back\\slash, bell\u0007"

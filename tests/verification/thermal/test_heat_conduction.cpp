@@ -68,6 +68,7 @@ double bar_temperature(double x, double t, double length, double t1, double alph
 struct StripCase {
   const char* name;
   bool shells;
+  int solver;  // 11 direct, 12 conjugate gradients
 };
 
 class StripConduction : public ::testing::TestWithParam<StripCase> {};
@@ -81,6 +82,7 @@ TEST_P(StripConduction, FollowsTheFourierSeriesAndReachesTheLinearProfile) {
   c.end_time = 4000.0;  // 5 L^2 / alpha: the steady state
   c.step = 0.5;
   c.state_dt = 20.0;
+  c.solver = GetParam().solver;
   std::string deck = test::thermal_header(c);
   deck += shells ? test::shell_strip(n, length, a, 0.001) : test::hex_strip(n, length, a);
   deck += "*BOUNDARY_TEMPERATURE_SET\n1,0," + std::to_string(t1) + "\n2,0,0.0\n*END\n";
@@ -89,6 +91,8 @@ TEST_P(StripConduction, FollowsTheFourierSeriesAndReachesTheLinearProfile) {
   const engine::RunResult r = engine::run(m, probe.sink, {});
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(r.thermal_steps, 7000);
+  if (c.solver == 12)
+    EXPECT_GT(r.thermal_iterations, 100);  // the iterative solver did the work
   // The 1 % criterion on the range T1 - 0, at every node, at early, middle and late times.
   for (double t : {20.0, 100.0, 300.0, 4000.0}) {
     ASSERT_TRUE(probe.temperature.count(t)) << "no state at t = " << t;
@@ -108,8 +112,9 @@ TEST_P(StripConduction, FollowsTheFourierSeriesAndReachesTheLinearProfile) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, StripConduction,
-                         ::testing::Values(StripCase{"hexahedra", false},
-                                           StripCase{"shells", true}),
+                         ::testing::Values(StripCase{"hexahedra", false, 11},
+                                           StripCase{"shells", true, 11},
+                                           StripCase{"hexahedra_cg", false, 12}),
                          [](const auto& p) { return std::string(p.param.name); });
 
 // A body cooling by convection from its faces, uniform through its thickness.

@@ -32,6 +32,12 @@ struct RunSummary {
   /// other fields cover the whole run, its parts before the restart included.
   double restarted_at = std::numeric_limits<double>::quiet_NaN();
   std::string checkpoint;  ///< the last checkpoint written (empty: none)
+  /// Computed temperatures (SOLN 1, 2): thermal steps, conjugate-gradient iterations, and the
+  /// heat ledger's stored heat and the sum of its paths at the end (heat.csv).
+  long thermal_steps = 0;
+  long thermal_iterations = 0;
+  double heat_stored = 0.0;
+  double heat_entered = 0.0;
   std::vector<std::string> warnings;
 };
 
