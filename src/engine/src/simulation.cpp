@@ -180,6 +180,7 @@ struct Simulation::State {
   std::vector<double> saved_f;
   std::vector<double> rfx, rfy, rfz;
   std::vector<std::array<double, 3>> rigid_free;
+  std::vector<core::ContactHeatLink> heat_links;  // the _THERMAL contacts' slave nodes
 
   void set_up_run();
   void visit_state(core::StateArchive& a);
@@ -861,8 +862,12 @@ bool Simulation::State::heat_conduction(bool now) {
   g.stride = 6;
   for (const element::ShellBlockState& b : shells)
     g.shell_thickness.push_back(b.thickness.data());
+  heat_links.clear();
+  if (contact)
+    contact->heat_links(packed.data(), heat_links);
   const thermal::StepReport r =
-      heat->advance(t, g, std::span<double>(s.temperature), thermal::MechanicalHeat{}, dt_mech);
+      heat->advance(t, g, std::span<double>(s.temperature), thermal::MechanicalHeat{},
+                    std::span<const core::ContactHeatLink>(heat_links), dt_mech);
   if (!r.ok) {
     sync();
     fail(r.error + " (cycle " + std::to_string(cycle) + ")");

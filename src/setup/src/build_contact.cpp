@@ -425,6 +425,27 @@ struct ContactBuilder {
       ci.search_interval = c.bsort > 0 ? c.bsort : nsbcs;
       ci.birth = c.birth;
       ci.death = c.death;
+      if (c.thermal) {
+        core::ContactHeat& h = ci.heat;
+        h.enabled = true;
+        h.k = c.k;
+        h.frad = c.frad;
+        h.h0 = c.h0;
+        h.lmin = c.lmin;
+        h.lmax = c.lmax;
+        h.ftosa = c.ftosa;
+        h.one_way = c.algo == 1;
+        if (c.h0 < 0.0) {
+          const int id = static_cast<int>(-c.h0);
+          for (std::size_t i = 0; i < d.curves.size(); ++i)
+            if (d.curves[i].id == id)
+              h.h0_curve = static_cast<Index>(i);
+          if (h.h0_curve < 0)
+            errors.push_back({c.card1, c.keyword, "H0",
+                              "H0 = " + std::to_string(c.h0) + ": curve " + std::to_string(id) +
+                                  " (conductance against pressure) does not exist"});
+        }
+      }
       const model::UserInterfaceFrictionDesc* uif = nullptr;
       for (const auto& u : d.user_interface_frictions)
         if (c.id != 0 && u.contact_id == c.id)

@@ -11,7 +11,17 @@ namespace {
 using core::Index;
 using Diagnostics = std::vector<keyword::Diagnostic>;
 
+model::SourceLocation first_thermal_contact(const model::ModelDesc& d) {
+  for (const model::ContactDesc& c : d.contacts)
+    if (c.thermal)
+      return c.where;
+  return {};
+}
+
 bool any_thermal_keyword(const model::ModelDesc& d) {
+  for (const model::ContactDesc& c : d.contacts)
+    if (c.thermal)
+      return true;
   return d.thermal_solver || d.thermal_timestep || !d.thermal_materials.empty() ||
          !d.heat_boundaries.empty() || d.tprint;
 }
@@ -40,7 +50,8 @@ void build_thermal(const model::ModelDesc& d, core::Model& m, Diagnostics& error
           : d.thermal_timestep           ? d.thermal_timestep->where
           : !d.thermal_materials.empty() ? d.thermal_materials.front().where
           : !d.heat_boundaries.empty()   ? d.heat_boundaries.front().where
-                                         : d.tprint->where;
+          : d.tprint                     ? d.tprint->where
+                                         : first_thermal_contact(d);
       warnings.push_back({where, "*CONTROL_SOLUTION", "SOLN",
                           "the deck has thermal keywords but no *CONTROL_SOLUTION with SOLN 1 "
                           "or 2: temperatures are not computed (they stay as prescribed)"});

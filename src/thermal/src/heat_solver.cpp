@@ -115,32 +115,8 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
     }
   }
   const std::size_t u = nodes_.size();
-  // The pattern: every pair of nodes of an element, and every diagonal.
-  std::vector<Eigen::Triplet<double>> pairs;
-  for (std::size_t i = 0; i < u; ++i)
-    pairs.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.0);
-  const auto add_pairs = [&](const auto& blocks, std::size_t per) {
-    for (const auto& b : blocks) {
-      if (!conducts(b.part))
-        continue;
-      for (std::size_t e = 0; e < b.size(); ++e)
-        for (std::size_t i = 0; i < per; ++i)
-          for (std::size_t j = 0; j < per; ++j)
-            pairs.emplace_back(static_cast<int>(unknown_[idx(b.connectivity[per * e + i])]),
-                               static_cast<int>(unknown_[idx(b.connectivity[per * e + j])]), 0.0);
-    }
-  };
-  add_pairs(model.solid_blocks, 8);
-  add_pairs(model.shell_blocks, 4);
   Matrices& m = *m_;
-  m.K.resize(static_cast<int>(u), static_cast<int>(u));
-  m.K.setFromTriplets(pairs.begin(), pairs.end());
-  m.K.makeCompressed();
-  std::fill(m.K.valuePtr(), m.K.valuePtr() + m.K.nonZeros(), 0.0);
-  m.A = m.K;
-  m.diagonal.resize(u);
-  for (std::size_t i = 0; i < u; ++i)
-    m.diagonal[i] = m.entry(m.K, static_cast<int>(i), static_cast<int>(i));
+  build_pattern();
   for (auto* v : {&m.s_conv, &m.h_conv, &m.s_rad, &m.h_rad, &m.s_flux, &m.s_gen})
     v->assign(u, 0.0);
   m.t.resize(static_cast<Eigen::Index>(u));
@@ -208,6 +184,44 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
 }
 
 HeatSolver::~HeatSolver() = default;
+
+// The matrix pattern: every pair of nodes of a conducting element, every diagonal, and the
+// couplings the contact links have brought so far (extra_). The values start at 0.
+void HeatSolver::build_pattern() {
+  const std::size_t u = nodes_.size();
+  const auto conducts = [&](Index part) { return model_.parts[idx(part)].thermal_material >= 0; };
+  std::vector<Eigen::Triplet<double>> pairs;
+  for (std::size_t i = 0; i < u; ++i)
+    pairs.emplace_back(static_cast<int>(i), static_cast<int>(i), 0.0);
+  const auto add_pairs = [&](const auto& blocks, std::size_t per) {
+    for (const auto& b : blocks) {
+      if (!conducts(b.part))
+        continue;
+      for (std::size_t e = 0; e < b.size(); ++e)
+        for (std::size_t i = 0; i < per; ++i)
+          for (std::size_t j = 0; j < per; ++j)
+            pairs.emplace_back(static_cast<int>(unknown_[idx(b.connectivity[per * e + i])]),
+                               static_cast<int>(unknown_[idx(b.connectivity[per * e + j])]), 0.0);
+    }
+  };
+  add_pairs(model_.solid_blocks, 8);
+  add_pairs(model_.shell_blocks, 4);
+  for (const auto& rc : extra_) {
+    pairs.emplace_back(rc[0], rc[1], 0.0);
+    pairs.emplace_back(rc[1], rc[0], 0.0);
+  }
+  Matrices& m = *m_;
+  m.K = SparseMatrix(static_cast<int>(u), static_cast<int>(u));
+  m.K.setFromTriplets(pairs.begin(), pairs.end());
+  m.K.makeCompressed();
+  std::fill(m.K.valuePtr(), m.K.valuePtr() + m.K.nonZeros(), 0.0);
+  m.A = m.K;
+  m.diagonal.resize(u);
+  for (std::size_t i = 0; i < u; ++i)
+    m.diagonal[i] = m.entry(m.K, static_cast<int>(i), static_cast<int>(i));
+  m.analysed = false;
+  since_assembly_ = 0;  // the conductance is assembled anew
+}
 
 double HeatSolver::step_length(double dt_mech) const {
   const core::ThermalControls& c = model_.thermal;
@@ -296,7 +310,8 @@ void HeatSolver::assemble(const Geometry& g, double /*scale*/) {
 }
 
 StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> temperature,
-                               const MechanicalHeat& heat, double /*dt_mech*/) {
+                               const MechanicalHeat& heat,
+                               std::span<const core::ContactHeatLink> links, double /*dt_mech*/) {
   StepReport rep;
   const double h = t1 - time_;
   if (!(h > 0.0))
@@ -309,6 +324,32 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   const double t_theta = time_ + theta * h;  // where the step's sources are evaluated
   const double scale =
       c.tsf_curve >= 0 ? model_.curves[idx(c.tsf_curve)](t_theta) : std::max(c.tsf, 0.0);
+
+  // Contact links: each couples a slave node to its segment's nodes. A coupling of two
+  // conducting nodes the pattern lacks rebuilds it (the contact found a new neighbour).
+  const auto unknown_of = [&](Index node) { return unknown_[idx(node)]; };
+  bool new_coupling = false;
+  for (const core::ContactHeatLink& l : links) {
+    if (l.heat->one_way)
+      continue;
+    std::array<Index, 5> nodes{l.slave, l.master[0], l.master[1], l.master[2], l.master[3]};
+    std::array<double, 5> w{1.0, l.weight[0], l.weight[1], l.weight[2], l.weight[3]};
+    for (std::size_t i = 0; i < 5; ++i) {
+      const Index ui = unknown_of(nodes[i]);
+      if (ui < 0 || w[i] == 0.0)
+        continue;
+      for (std::size_t j = i + 1; j < 5; ++j) {
+        const Index uj = unknown_of(nodes[j]);
+        if (uj >= 0 && w[j] != 0.0 &&
+            m.entry(m.K, static_cast<int>(ui), static_cast<int>(uj)) < 0) {
+          extra_.push_back({static_cast<int>(ui), static_cast<int>(uj)});
+          new_coupling = true;
+        }
+      }
+    }
+  }
+  if (new_coupling)
+    build_pattern();
 
   if (since_assembly_ == 0 || since_assembly_ >= std::max(1, c.reassemble_every)) {
     assemble(g, scale);
@@ -391,6 +432,60 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     a[k] *= ks;
   for (std::size_t i = 0; i < u; ++i)
     a[m.diagonal[i]] += (steady ? 0.0 : capacity_[i] / h) + m.h_conv[i] + m.h_rad[i];
+
+  // Contact links: the flux into the slave q = hA (sum w_j T_j - T_s) = -hA sum_i a_i T_i
+  // (a = 1, -w_1 .. -w_4) adds hA a_i a_j to the conducting rows and columns (symmetric, rows
+  // summing to 0); a node that does not conduct (a tool), and the master of a one-way link,
+  // keeps its temperature: its part moves to the right-hand side.
+  struct LinkTerm {
+    std::array<Index, 5> node;  // slave, masters
+    std::array<double, 5> a;
+    double ha;
+    bool one_way;
+  };
+  const auto t_of = [&](Index node) {
+    const Index un = unknown_of(node);
+    return un >= 0 ? temperature_[idx(un)] : temperature[idx(node)];
+  };
+  std::vector<LinkTerm> terms;
+  terms.reserve(links.size());
+  for (const core::ContactHeatLink& l : links) {
+    const core::ContactHeat& ch = *l.heat;
+    const double ts = t_of(l.slave);
+    double tm = 0.0;
+    for (std::size_t j = 0; j < 4; ++j)
+      tm += l.weight[j] * t_of(l.master[j]);
+    double hc = 0.0;
+    if (l.gap <= ch.lmin) {
+      hc = ch.h0_curve >= 0 ? model_.curves[idx(ch.h0_curve)](std::max(l.pressure, 0.0)) : ch.h0;
+    } else {
+      hc = ch.k / l.gap + ch.frad * (ts * ts + tm * tm) * (ts + tm);
+    }
+    const double ha = hc * l.area * scale;
+    if (!(ha > 0.0))
+      continue;
+    const LinkTerm lt{{l.slave, l.master[0], l.master[1], l.master[2], l.master[3]},
+                      {1.0, -l.weight[0], -l.weight[1], -l.weight[2], -l.weight[3]},
+                      ha,
+                      ch.one_way};
+    for (std::size_t i = 0; i < 5; ++i) {
+      const Index ui = unknown_of(lt.node[i]);
+      if (ui < 0 || lt.a[i] == 0.0 || (lt.one_way && i > 0))
+        continue;
+      double r = 0.0;
+      for (std::size_t j = 0; j < 5; ++j) {
+        if (lt.a[j] == 0.0)
+          continue;
+        const Index uj = unknown_of(lt.node[j]);
+        r -= ha * lt.a[i] * lt.a[j] * t_of(lt.node[j]);
+        if (uj >= 0 && !(lt.one_way && j > 0))
+          a[m.entry(m.A, static_cast<int>(ui), static_cast<int>(uj))] +=
+              theta * ha * lt.a[i] * lt.a[j];
+      }
+      m.b[static_cast<Eigen::Index>(ui)] += r;
+    }
+    terms.push_back(lt);
+  }
 
   // Prescribed temperatures: their change is known; their columns move to the right-hand
   // side (the matrix stays symmetric), and what holding them takes is the residual of their
@@ -486,7 +581,27 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
       r += v * m.dt[row];
     step.prescribed += h * r;
   }
-  step.contact = mech_contact;
+  // The heat the links brought into the conducting nodes, at the theta point: between two
+  // conducting sides it sums to 0; what remains came from tools and one-way masters.
+  double contact_heat = 0.0;
+  for (const LinkTerm& lt : terms) {
+    double tsum = 0.0;
+    for (std::size_t j = 0; j < 5; ++j) {
+      if (lt.a[j] == 0.0)
+        continue;
+      const Index uj = unknown_of(lt.node[j]);
+      const bool implicit = uj >= 0 && !(lt.one_way && j > 0);
+      tsum += lt.a[j] *
+              (t_of(lt.node[j]) + (implicit ? theta * m.dt[static_cast<Eigen::Index>(uj)] : 0.0));
+    }
+    for (std::size_t i = 0; i < 5; ++i) {
+      if (lt.a[i] == 0.0 || unknown_of(lt.node[i]) < 0 || (lt.one_way && i > 0))
+        continue;
+      contact_heat -= h * lt.ha * lt.a[i] * tsum;
+    }
+  }
+  step.contact = mech_contact + contact_heat;
+
   step.friction = mech_friction;
   step.plastic = mech_plastic;
   ledger_.contact += step.contact;
@@ -532,6 +647,9 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
 void HeatSolver::visit_state(core::StateArchive& a) {
   a.fixed("temperature", std::span<double>(temperature_));
   a.fixed("change", std::span<double>(change_));
+  a.array("pattern_links", extra_);
+  if (!a.saving())
+    build_pattern();  // the pattern the saved conductance fills
   a.fixed("conductance",
           std::span<double>(m_->K.valuePtr(), static_cast<std::size_t>(m_->K.nonZeros())));
   a.value("time", time_);

@@ -492,5 +492,41 @@ TEST(PartThermalMaterial, TmidIsKept) {
   expect_error("*PART\np\n1,1,1,0,0,0,0,-1\n", 3, "*PART", "TMID", ">= 0");
 }
 
+// --- *CONTACT_..._THERMAL: the thermal card after card 3
+TEST(ContactThermal, TheThermalCardLandsInItsFields) {
+  const ReadResult r = read_ok(
+      "*CONTACT_SURFACE_TO_SURFACE_THERMAL_ID\n5,lap\n2,1,3,3\n0.2,0.1\n1,1\n"
+      "40.0,1e-8,5000.0,0.01,0.5,0.7,0,1\n*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_THERMAL\n"
+      "3,4,3,3\n\n\n0,0,-9,0,0.1\n");
+  ASSERT_EQ(r.model.contacts.size(), 2u);
+  const model::ContactDesc& c = r.model.contacts[0];
+  EXPECT_TRUE(c.thermal);
+  EXPECT_EQ(c.id, 5);
+  EXPECT_DOUBLE_EQ(c.fs, 0.2);
+  EXPECT_DOUBLE_EQ(c.k, 40.0);
+  EXPECT_DOUBLE_EQ(c.frad, 1e-8);
+  EXPECT_DOUBLE_EQ(c.h0, 5000.0);
+  EXPECT_DOUBLE_EQ(c.lmin, 0.01);
+  EXPECT_DOUBLE_EQ(c.lmax, 0.5);
+  EXPECT_DOUBLE_EQ(c.ftosa, 0.7);
+  EXPECT_EQ(c.algo, 1);
+  const model::ContactDesc& d = r.model.contacts[1];
+  EXPECT_TRUE(d.thermal);
+  EXPECT_DOUBLE_EQ(d.h0, -9.0);  // a curve of the conductance against pressure
+  EXPECT_DOUBLE_EQ(d.ftosa, 0.5);
+  EXPECT_EQ(d.algo, 0);
+}
+
+TEST(ContactThermal, Rejections) {
+  constexpr std::string_view kKw = "*CONTACT_SURFACE_TO_SURFACE_THERMAL";
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0.5,0.1\n", 5, kKw, "LMAX",
+               "below LMIN");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0,0.1,0.5,1\n", 5, kKw,
+               "BC_FLG", "not supported yet");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0,0.1,0.5,0,2\n", 5, kKw,
+               "ALGO", "0 or 1");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n-3\n", 5, kKw, "K", ">= 0");
+}
+
 }  // namespace
 }  // namespace plyform::keyword

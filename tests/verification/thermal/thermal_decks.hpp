@@ -86,3 +86,31 @@ inline std::string shell_strip(int n, double length, double a, double t) {
 }
 
 }  // namespace plyform::test
+
+namespace plyform::test {
+
+/// Two a x a blocks stacked along z, one hexahedron each: part 1 on [0, t1], part 2 on
+/// [t1 + gap, t1 + gap + t2] (its own nodes, 9..16), each with its thermal material (TMID 1,
+/// 2: both steel-like with conductivity k), in a _THERMAL contact of part 2 (slave) on part 1
+/// with the closed-gap conductance h0, LMIN, LMAX and ALGO given.
+inline std::string stacked_blocks(double a, double t1, double t2, double gap, double k, double h0,
+                                  double lmin, double lmax, int algo) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "*MAT_THERMAL_ISOTROPIC\n2,0.0\n" << kHeatCapacity << "," << k << "\n";
+  os << "*PART\nlower\n1,1,1,0,0,0,0,2\n*PART\nupper\n2,1,1,0,0,0,0,2\n*SECTION_SOLID\n1,1\n";
+  os << "*NODE\n";
+  const double z[4] = {0.0, t1, t1 + gap, t1 + gap + t2};
+  int id = 1;
+  for (int layer = 0; layer < 4; ++layer)
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {a, 0.0}, {a, a}, {0.0, a}})
+      os << id++ << "," << x << "," << y << "," << z[layer] << "\n";
+  os << "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n2,2,9,10,11,12,13,14,15,16\n";
+  os << "*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n0,0\n0,0\n";
+  os << "0,"
+     << "0," << h0 << "," << lmin << "," << lmax << ",0.5,0," << algo << "\n";
+  os << "*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8\n*SET_NODE_LIST\n2\n9,10,11,12,13,14,15,16\n";
+  return os.str();
+}
+
+}  // namespace plyform::test

@@ -13,7 +13,8 @@
 namespace plyform::keyword {
 namespace {
 
-constexpr std::array<std::string_view, 3> kContactOptions{"", "ID", "TITLE"};
+constexpr std::array<std::string_view, 6> kContactOptions{"",        "ID",         "TITLE",
+                                                          "THERMAL", "THERMAL_ID", "THERMAL_TITLE"};
 
 constexpr std::array kSlaveTypes{0, 2, 3, 4};
 constexpr std::array kMasterTypes{0, 2, 3};
@@ -268,6 +269,51 @@ constexpr std::array kCardD{
     default_only("SHLEDG", FieldType::kInteger, "shell edge option: must be 0"),
 };
 
+constexpr std::array kAlgos{0, 1};
+constexpr std::array kThermalCard{
+    FieldSpec{.name = "K",
+              .min_value = 0.0,
+              .unit = "power/(length temperature)",
+              .description = "conductivity of the medium in an open gap: h = K / gap (a "
+                             "negative K, a curve against temperature, is not supported)"},
+    FieldSpec{
+        .name = "FRAD",
+        .min_value = 0.0,
+        .unit = "power/(area temperature^4)",
+        .description = "radiation factor across an open gap: h = FRAD (T1^2 + T2^2)(T1 + T2)"},
+    FieldSpec{.name = "H0",
+              .unit = "power/(area temperature)",
+              .description = "conductance of a closed gap (gap <= LMIN, or in contact); < 0: -H0 "
+                             "is a curve of the conductance against the contact pressure"},
+    FieldSpec{.name = "LMIN",
+              .min_value = 0.0,
+              .unit = "length",
+              .description = "gaps up to LMIN are closed (conductance H0)"},
+    FieldSpec{.name = "LMAX",
+              .min_value = 0.0,
+              .unit = "length",
+              .description = "no heat crosses a gap wider than LMAX"},
+    FieldSpec{.name = "FTOSA",
+              .default_value = 0.5,
+              .min_value = 0.0,
+              .max_value = 1.0,
+              .unit = "-",
+              .description = "share of the friction heat to the slave side (0: 0.5)"},
+    FieldSpec{.name = "BC_FLG",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "thermal boundary conditions of the faces in contact: must be 0",
+              .allowed = kZeroOrOne,
+              .allowed_note = "BC_FLG 1 is not supported yet"},
+    FieldSpec{.name = "ALGO",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "0 two-way (heat flows to both sides), 1 one-way (the master's "
+                             "temperature is not changed by the contact)",
+              .allowed = kAlgos,
+              .allowed_note = "ALGO takes 0 or 1"},
+};
+
 constexpr std::array kCards{
     CardSpec{.title = "ID card", .fields = kIdFields, .presence = "with _ID or _TITLE only"},
     CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
@@ -288,7 +334,12 @@ constexpr std::array kCards{
              .fields = kCardD,
              .presence = "optional; read at LS-DYNA's defaults only; cards E and after are not "
                          "supported"},
+    CardSpec{.title = "Thermal card",
+             .fields = kThermalCard,
+             .presence = "with _THERMAL only: required, right after card 3 (cards 2 and 3 "
+                         "must then be given)"},
 };
+constexpr std::size_t kThermalCardIndex = 8;
 
 /// Optional cards B-D: every field must keep its default (the table says which values count).
 void read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& line) {
@@ -311,7 +362,9 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   c.kind = kind;
   c.keyword = in.keyword().display();
   c.where = in.keyword_where();
-  if (in.option() == "ID" || in.option() == "TITLE") {
+  const std::string_view option = in.option();
+  c.thermal = option.starts_with("THERMAL");
+  if (option.ends_with("ID") || option.ends_with("TITLE")) {
     const CardValues id = in.next_card(kCards[0], "ID card (CID HEADING)");
     c.id = id.integer("CID");
     c.heading = id.text("HEADING");
@@ -363,6 +416,28 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     c.fsf = zero_means(c3.real("FSF"), 1.0);
     c.vsf = zero_means(c3.real("VSF"), 1.0);
   }
+  if (c.thermal) {
+    const auto line_t = in.next_line();
+    if (!line_t) {
+      in.fail(in.keyword().line, "",
+              "_THERMAL needs its thermal card (K FRAD H0 LMIN LMAX FTOSA BC_FLG ALGO) after "
+              "cards 2 and 3");
+    }
+    const CardValues th = in.read(kCards[kThermalCardIndex], *line_t);
+    c.k = th.real("K");
+    c.frad = th.real("FRAD");
+    c.h0 = th.real("H0");
+    c.lmin = th.real("LMIN");
+    c.lmax = th.real("LMAX");
+    c.ftosa = zero_means(th.real("FTOSA"), 0.5);
+    c.bc_flg = th.integer("BC_FLG");
+    c.algo = th.integer("ALGO");
+    require_zero(in, line_t->line, "BC_FLG", c.bc_flg, "boundary conditions off in contact");
+    if (c.lmax < c.lmin) {
+      in.fail(line_t->line, "LMAX",
+              fmt::format("LMAX = {} is below LMIN = {}: no gap could carry heat", c.lmax, c.lmin));
+    }
+  }
   if (const auto line_a = in.next_line()) {
     const CardValues a = in.read(kCards[4], *line_a);
     c.soft = a.integer("SOFT");
@@ -371,7 +446,7 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     c.bsort = a.integer("BSORT");
     require_zero(in, line_a->line, "LCIDAB", a.integer("LCIDAB"), "an airbag curve");
   }
-  for (std::size_t k = 5; k < kCards.size(); ++k) {
+  for (std::size_t k = 5; k < kThermalCardIndex; ++k) {
     if (const auto line = in.next_line())
       read_default_card(in, kCards[k], *line);
   }

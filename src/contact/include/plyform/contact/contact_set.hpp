@@ -105,6 +105,12 @@ class ContactSet {
   [[nodiscard]] std::vector<InterfaceReport> report() const;
   /// Slave nodes of the cohesive interfaces, pass by pass.
   void cohesive_results(std::vector<SlaveNodeResult>& out) const;
+  /// The slave nodes of the _THERMAL interfaces within LMAX of a master segment, pass by pass
+  /// (a two-way interface's two passes each carry half the area; a one-way one (ALGO 1) only
+  /// its first pass).
+  /// `packed`: the current positions (x y z vx vy vz per node). A link's area is the slave
+  /// node's share of its faces projected on the segment's plane.
+  void heat_links(const double* packed, std::vector<core::ContactHeatLink>& out) const;
   [[nodiscard]] std::size_t slave_count() const;
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }

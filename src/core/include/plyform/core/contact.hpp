@@ -5,6 +5,7 @@
 // *USER_INTERFACE_FRICTION puts the cohesive law on it; otherwise the law runs as a plain
 // penalty-Coulomb contact (no adhesion, friction FS/FD/DC/VC, damping VDC). docs/contact.md.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,33 @@ struct ContactPass {
   [[nodiscard]] std::size_t segment_count() const { return segments.size() / 4; }
 };
 
+/// Heat across an interface (the _THERMAL option of its keyword): the conductance of a
+/// slave node's gap g to its master segment is H0 (or the curve of the contact pressure) for
+/// g <= LMIN, K / g + FRAD (T_s^2 + T_m^2)(T_s + T_m) for LMIN < g <= LMAX, 0 beyond.
+struct ContactHeat {
+  bool enabled = false;
+  double k = 0.0;
+  double frad = 0.0;
+  double h0 = 0.0;
+  Index h0_curve = -1;  ///< H0 < 0: conductance against pressure (index into Model::curves)
+  double lmin = 0.0;
+  double lmax = 0.0;
+  double ftosa = 0.5;
+  bool one_way = false;  ///< ALGO 1: the contact leaves the master's temperature unchanged
+};
+
+/// A slave node's link to its master segment across a _THERMAL interface, as the contact
+/// last measured it: what the heat solver needs to set the link's conductance.
+struct ContactHeatLink {
+  Index slave = 0;
+  std::array<Index, 4> master{};   ///< the segment's nodes
+  std::array<double, 4> weight{};  ///< the projection's shape functions (sum 1)
+  double area = 0.0;               ///< the slave node's area, over the interface's passes
+  double gap = 0.0;                ///< surface gap (<= 0: in contact)
+  double pressure = 0.0;           ///< contact pressure, positive in compression
+  const ContactHeat* heat = nullptr;
+};
+
 struct ContactInterface {
   GlobalId id = 0;      ///< CID of the deck (0 when the deck gave none)
   std::string keyword;  ///< the *CONTACT_ keyword, for messages
@@ -74,6 +102,7 @@ struct ContactInterface {
   double birth = 0.0;
   double death = 1e20;
   bool cohesive = false;  ///< the law has adhesion (a *USER_INTERFACE_FRICTION names it)
+  ContactHeat heat;       ///< the _THERMAL option
   law::Parameters law;    ///< the interface law (cohesive, or penalty-Coulomb)
 };
 

@@ -59,8 +59,18 @@ struct ContactDesc {
   double sofscl = 0.1;    ///< SOFSCL: scale factor of the SOFT = 1 stiffness
   double maxpar = 1.025;  ///< MAXPAR: parametric extension of a segment for the projection
   int bsort = 0;          ///< BSORT: cycles between bucket sorts (0: automatic)
-  SourceLocation where;   ///< the keyword line
-  SourceLocation card1;   ///< the line of card 1 (SSID ...)
+  // Thermal card (the _THERMAL option): heat across the interface (docs/thermal.md).
+  bool thermal = false;
+  double k = 0.0;        ///< K: conductivity of the gap medium (h = K / gap across an open gap)
+  double frad = 0.0;     ///< FRAD: radiation factor across an open gap
+  double h0 = 0.0;       ///< H0: conductance of a closed gap (< 0: -H0 a curve against pressure)
+  double lmin = 0.0;     ///< LMIN: gaps up to LMIN are closed
+  double lmax = 0.0;     ///< LMAX: no heat across gaps beyond LMAX
+  double ftosa = 0.5;    ///< FTOSA: share of the friction heat to the slave side
+  int bc_flg = 0;        ///< BC_FLG: must be 0
+  int algo = 0;          ///< ALGO: 0 two-way, 1 one-way (the master's temperature unchanged)
+  SourceLocation where;  ///< the keyword line
+  SourceLocation card1;  ///< the line of card 1 (SSID ...)
 };
 
 /// *SET_SEGMENT (_TITLE): quadrilaterals (N3 = N4 for a triangle) given by node ids.

@@ -4,6 +4,7 @@
 // radiation on faces, prescribed temperatures, heat from the mechanics; advanced by an
 // implicit theta step (TIP) that spans many mechanical steps (docs/thermal.md).
 
+#include <array>
 #include <memory>
 #include <span>
 #include <vector>
@@ -72,8 +73,10 @@ class HeatSolver {
   [[nodiscard]] double step_length(double dt_mech) const;
   /// One thermal step from time() to t1 on geometry `g`; writes the temperatures of the
   /// conducting nodes into `temperature` (every node).
+  /// `links`: the slave nodes of the _THERMAL contacts and their segments (contact heat).
   StepReport advance(double t1, const Geometry& g, std::span<double> temperature,
-                     const MechanicalHeat& heat, double dt_mech);
+                     const MechanicalHeat& heat, std::span<const core::ContactHeatLink> links,
+                     double dt_mech);
 
   [[nodiscard]] const HeatLedger& ledger() const { return ledger_; }
   [[nodiscard]] long steps() const { return steps_; }
@@ -88,6 +91,7 @@ class HeatSolver {
  private:
   struct Matrices;
   void assemble(const Geometry& g, double scale);
+  void build_pattern();
   const core::Model& model_;
   std::vector<core::Index> nodes_;    // unknown -> node
   std::vector<core::Index> unknown_;  // node -> unknown (-1: none)
@@ -99,6 +103,7 @@ class HeatSolver {
   std::vector<std::pair<core::Index, double>> generation_;       // unknown, volume x material
   std::vector<core::Index> generation_material_;                 // per entry of generation_
   std::unique_ptr<Matrices> m_;
+  std::vector<std::array<int, 2>> extra_;  // matrix couplings brought by contact links
   double time_ = 0.0;
   double next_ = 0.0;     // the variable step's next length
   double last_dt_ = 0.0;  // the length the matrix was assembled for
