@@ -5,8 +5,9 @@
 
 Generates the three-layer square cup (examples/square_cup: aluminium 0.25 / core 1.00 /
 aluminium 0.25 mm, two cohesive interfaces, rigid punch, die and blank holder) twice: once
-mechanics only, once coupled (SOLN 2: every layer conducts, a variable thermal step growing to
-TMAX = 100 mechanical steps, the blank starting at 250 C and its symmetry plane x = 0 held at 150 C, so that heat
+mechanics only, once coupled (SOLN 2: every layer conducts, every contact is _THERMAL (the
+tools and the two cohesive interfaces), a variable thermal step growing to TMAX = 100
+mechanical steps, the blank starting at 250 C and its symmetry plane x = 0 held at 150 C, so that heat
 flows), runs both on the same machine one
 after the other and prints the wall times, the thermal steps and the thermal share of the
 cycle. Run it with nothing else running on the machine. Standard library only.
@@ -52,6 +53,23 @@ def make(base, solver, out):
         if old not in text:
             sys.exit(f"thermal_cost.py: the generated deck has no part card for part {pid}")
         text = text.replace(old, new, 1)
+    # Every contact carries heat: the tools (which do not conduct: they keep their
+    # temperature) and the two cohesive interfaces, with a closed-gap conductance of
+    # 5000 W/(m^2 K) (5 in t/(s^3 K), the deck's mm, t, s) up to 0.1 mm.
+    lines = text.split("\n")
+    kept = []
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith("*CONTACT_") and line.endswith("_ID"):
+            kept.append(line[:-3] + "_THERMAL_ID")
+            kept.extend(lines[i + 1:i + 5])  # ID card, cards 1, 2, 3
+            kept.append("0,0,5.0,0.0,0.1,0.5,0,0")
+            i += 5
+            continue
+        kept.append(line)
+        i += 1
+    text = "\n".join(kept)
     text = text.replace("*END", THERMAL.format(solver=solver) + "*END", 1)
     with open(out, "w") as f:
         f.write(text)

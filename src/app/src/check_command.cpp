@@ -205,9 +205,7 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                t.solver == 12 ? "diagonally scaled conjugate-gradient" : "direct LDL^T",
                t.tsf_curve >= 0 ? std::string("from a curve") : fmt::format("{:g}", t.tsf));
     if (!t.thermal_only && t.fwork > 0.0)
-      fmt::print(out,
-                 "  note: plastic work and friction do not heat the parts yet (FWORK, FRCENG "
-                 "come with the contact heat)\n");
+      fmt::print(out, "  note: plastic work does not heat the parts yet (FWORK)\n");
   }
   fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
   if (m.output.d3dump_cycles > 0) {

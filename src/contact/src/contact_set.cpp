@@ -119,6 +119,7 @@ struct PassRuntime {
   std::vector<double> slave_face_normal;     // 3 per slave face, current
   std::vector<signed char> slave_face_sign;  // per slave_face_index entry
   std::vector<double> rs, prev_rs;           // 3 per slave: its surface point minus the node
+  std::vector<double> friction_heated;       // per slave: friction dissipation turned to heat
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -206,6 +207,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->seg.assign(ns, -1);
       pr->prev_seg.assign(ns, -1);
       pr->shape.assign(4 * ns, 0.0);
+      pr->friction_heated.assign(ns, 0.0);
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
       pr->side.assign(ns, 0);
@@ -1251,6 +1253,32 @@ void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatL
   }
 }
 
+void ContactSet::take_friction_heat(std::vector<double>& energy) {
+  for (const auto& pp : passes_) {
+    PassRuntime& pr = *pp;
+    const core::ContactHeat& heat = pr.iface->heat;
+    if (!heat.enabled || !heat.friction_heat)
+      continue;
+    // The swapped pass of a two-way contact has the deck's master nodes as its slaves.
+    const double to_slave = pr.pass->slave_side_sign > 0 ? heat.ftosa : 1.0 - heat.ftosa;
+    const std::size_t ns = pr.pass->slave_count();
+    for (std::size_t k = 0; k < ns; ++k) {
+      const double d = pr.hist.e_friction[k] - pr.friction_heated[k];
+      if (d == 0.0)
+        continue;
+      pr.friction_heated[k] = pr.hist.e_friction[k];
+      const core::Index sg = pr.seg[k];
+      const double slave_part = sg >= 0 ? to_slave : 1.0;
+      energy[static_cast<std::size_t>(pr.pass->slave_nodes[k])] += slave_part * d;
+      if (sg < 0)
+        continue;
+      for (std::size_t j = 0; j < 4; ++j)
+        energy[static_cast<std::size_t>(pr.pass->segments[4 * static_cast<std::size_t>(sg) + j])] +=
+            (1.0 - slave_part) * d * pr.shape[4 * k + j];
+    }
+  }
+}
+
 void ContactSet::visit_state(core::StateArchive& a) {
   a.value("searches", searches_);
   for (std::size_t p = 0; p < passes_.size(); ++p) {
@@ -1275,6 +1303,7 @@ void ContactSet::visit_state(core::StateArchive& a) {
         a.fixed(std::string("law/") + name, std::span<double>(v, ns));
       }
     }
+    a.fixed("friction_heated", std::span<double>(pr.friction_heated));
     a.array("cand_start", pr.cand_start);
     a.array("cand", pr.cand);
     a.array("seg_radius", pr.seg_radius);

@@ -181,6 +181,7 @@ struct Simulation::State {
   std::vector<double> rfx, rfy, rfz;
   std::vector<std::array<double, 3>> rigid_free;
   std::vector<core::ContactHeatLink> heat_links;  // the _THERMAL contacts' slave nodes
+  std::vector<double> friction_heat;              // per node, since the last thermal step
 
   void set_up_run();
   void visit_state(core::StateArchive& a);
@@ -863,10 +864,17 @@ bool Simulation::State::heat_conduction(bool now) {
   for (const element::ShellBlockState& b : shells)
     g.shell_thickness.push_back(b.thickness.data());
   heat_links.clear();
-  if (contact)
+  thermal::MechanicalHeat mechanical;
+  if (contact) {
     contact->heat_links(packed.data(), heat_links);
+    friction_heat.assign(n, 0.0);
+    contact->take_friction_heat(friction_heat);
+    for (double& e : friction_heat)
+      e *= model.thermal.eqheat;  // mechanical work in thermal units
+    mechanical.friction = friction_heat.data();
+  }
   const thermal::StepReport r =
-      heat->advance(t, g, std::span<double>(s.temperature), thermal::MechanicalHeat{},
+      heat->advance(t, g, std::span<double>(s.temperature), mechanical,
                     std::span<const core::ContactHeatLink>(heat_links), dt_mech);
   if (!r.ok) {
     sync();

@@ -6,6 +6,7 @@
 // automatic contact does not care how the segments are oriented.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact_decks.hpp"
@@ -29,7 +30,8 @@ struct TwoPlates {
   bool flip_master = false, flip_slave = false;
   bool split_master = false;  // the master of two parts, x < 4 and x > 4, the second flipped
   int sstyp = 3, mstyp = 3, ssid = 2, msid = 1;
-  std::string extra;  // more keywords
+  std::string extra;   // more keywords
+  int slave_tmid = 0;  // the slave part's thermal material (friction heating)
 };
 
 std::string two_plates(const TwoPlates& c) {
@@ -39,7 +41,10 @@ std::string two_plates(const TwoPlates& c) {
   d.kw("*DATABASE_RCFORC").card(c.end / 300);
   d.kw("*DATABASE_NODOUT").card(c.end / 300);
   d.kw("*PART").kw("master").card(1, 1, 1);
-  d.kw("*PART").kw("slave").card(2, 1, 1);
+  if (c.slave_tmid > 0)
+    d.kw("*PART").kw("slave").card(2, 1, 1, 0, 0, 0, 0, c.slave_tmid);
+  else
+    d.kw("*PART").kw("slave").card(2, 1, 1);
   d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
   d.kw("*MAT_ELASTIC").card(1, kRho, kE, kNu);
   const double m = 8.0, s0 = 0.5 * (m - c.slave_size);
@@ -117,6 +122,39 @@ TEST(ContactFriction, LoadIsCarriedAndFrictionIsMuTimesNormalForce) {
   EXPECT_NEAR(r.sink.energies.back().contact, last.work, 1e-12 * std::abs(last.work));
   EXPECT_NEAR(last.stored + last.friction + last.damping, last.work, 0.01 * last.work);
   EXPECT_GT(last.friction, 0.5 * last.work);
+}
+
+// Friction heating (SOLN 2, FRCENG 1, a _THERMAL contact with no conductance, H0 = 0: the slave
+// plate is insulated): the heat the slave stores grows at FTOSA times the friction power
+// |F_x| v, within 1 %, and is the ledger's friction heat. Steel in mm, t, s: c = 5e8
+// mm^2/(s^2 K), k = 50 N/(s K).
+TEST(ContactFriction, FrictionHeatsTheInsulatedSlaveAtItsShareOfTheFrictionPower) {
+  TwoPlates c;
+  c.contact = "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_THERMAL_ID";
+  c.card_a = "0,0,0,0,0.1,0.7,0,0";  // the thermal card: K FRAD H0 LMIN LMAX FTOSA BC_FLG ALGO
+  c.slave_tmid = 1;
+  c.extra =
+      "*CONTROL_CONTACT\n0.1\n\n\n0,1\n*CONTROL_SOLUTION\n2\n*CONTROL_THERMAL_TIMESTEP\n"
+      "0,0.5,1e-5\n*MAT_THERMAL_ISOTROPIC\n1,0.0\n5e8,50.0\n*INITIAL_TEMPERATURE_SET\n0,293.0\n";
+  test::DeckRun r;
+  run_deck(two_plates(c), r);
+  ASSERT_TRUE(r.result.ok) << r.result.error;
+  const Steady s = steady(r, c.end);
+  const auto& books = r.sink.heat_books;
+  ASSERT_GT(books.size(), 100u);
+  // The stored heat's rate over the last third (steady load and drag).
+  const auto at = [&](double t) {
+    const auto it = std::lower_bound(books.begin(), books.end(), t,
+                                     [](const auto& b, double x) { return b.first < x; });
+    return *it;
+  };
+  const auto [t0, h0] = at(2.0 * c.end / 3.0);
+  const auto [t1, h1] = books.back();
+  const double rate = (h1.stored - h0.stored) / (t1 - t0);
+  const double power = std::abs(s.fx) * c.vx;
+  EXPECT_NEAR(rate, 0.7 * power, 0.01 * 0.7 * power);
+  EXPECT_NEAR(h1.stored, h1.friction, 5e-3 * h1.moved);  // the ledger closes
+  EXPECT_GT(h1.friction, 0.0);
 }
 
 // A master surface whose segments are not oriented alike (two patches, one flipped, as tool

@@ -160,8 +160,9 @@ constexpr std::array kCard4{
     FieldSpec{.name = "FRCENG",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "frictional energy (0, 1); read and ignored: plyform always adds "
-                             "the contact energy to glstat.csv",
+              .description = "frictional energy (0, 1): plyform always books it (glstat.csv, "
+                             "interface_energy.csv); with computed temperatures (SOLN 2), 1 "
+                             "also turns the friction of the _THERMAL contacts into heat",
               .allowed = kZeroOne},
     FieldSpec{.name = "SKIPRWG",
               .type = FieldType::kInteger,
@@ -236,7 +237,7 @@ void read_control_contact(KeywordInput& in) {
     }
   }
   if (const auto line4 = in.next_line()) {
-    in.read(kCards[3], *line4);
+    desc.frceng = in.read(kCards[3], *line4).integer("FRCENG");
   }
   if (has_more_cards(in)) {
     const auto extra = in.next_nonblank_line();

@@ -111,6 +111,10 @@ class ContactSet {
   /// `packed`: the current positions (x y z vx vy vz per node). A link's area is the slave
   /// node's share of its faces projected on the segment's plane.
   void heat_links(const double* packed, std::vector<core::ContactHeatLink>& out) const;
+  /// Adds to `energy` (per node) the friction heat of the _THERMAL interfaces with FRCENG 1
+  /// since the last call: of each slave node's friction dissipation, FTOSA to the deck's slave
+  /// side and the rest to its master side (a segment's nodes by the shape functions).
+  void take_friction_heat(std::vector<double>& energy);
   [[nodiscard]] std::size_t slave_count() const;
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }

@@ -75,6 +75,9 @@ struct ContactHeat {
   double lmax = 0.0;
   double ftosa = 0.5;
   bool one_way = false;  ///< ALGO 1: the contact leaves the master's temperature unchanged
+  /// *CONTROL_CONTACT FRCENG 1: the law's friction dissipation heats the sides, FTOSA of it
+  /// the slave's (its nodes), the rest the master's (through the segment's shape functions).
+  bool friction_heat = false;
 };
 
 /// A slave node's link to its master segment across a _THERMAL interface, as the contact

@@ -90,6 +90,7 @@ struct ControlContactDesc {
   int penopt = 1;       ///< PENOPT: 1 min(slave, master), 2 master, 3 slave stiffness
   int thkchg = 0;       ///< THKCHG: 1 = offsets follow the current shell thickness
   int nsbcs = 0;        ///< NSBCS: cycles between bucket sorts (0: automatic)
+  int frceng = 0;       ///< FRCENG: 1 = friction heats the _THERMAL contacts' sides (SOLN 2)
   double sfric = 0.0;   ///< SFRIC: default static friction (contacts with FS = 0)
   double dfric = 0.0;   ///< DFRIC: default dynamic friction
   double edc = 0.0;     ///< EDC: default decay coefficient
