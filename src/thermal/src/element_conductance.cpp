@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "plyform/element/hex8_geometry.hpp"
+
 namespace plyform::thermal {
 namespace {
-
-constexpr double kXi[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
-constexpr double kEta[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
-constexpr double kZeta[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
 
 Vec3 sub(const Vec3& a, const Vec3& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -24,41 +22,27 @@ Vec3 unit(const Vec3& a) {
   return l > 0.0 ? Vec3{a[0] / l, a[1] / l, a[2] / l} : Vec3{0.0, 0.0, 0.0};
 }
 
-// Shape function gradients in global axes at (xi, eta, zeta) and det J.
-double hex8_gradients(const std::array<Vec3, 8>& x, double xi, double eta, double zeta,
-                      double (&g)[8][3]) {
-  double dn[8][3];
-  for (int i = 0; i < 8; ++i) {
-    dn[i][0] = 0.125 * kXi[i] * (1 + eta * kEta[i]) * (1 + zeta * kZeta[i]);
-    dn[i][1] = 0.125 * kEta[i] * (1 + xi * kXi[i]) * (1 + zeta * kZeta[i]);
-    dn[i][2] = 0.125 * kZeta[i] * (1 + xi * kXi[i]) * (1 + eta * kEta[i]);
+// The element's nodes, one array per direction (the mechanics' hexahedron geometry).
+element::HexCoords coords(const std::array<Vec3, 8>& x) {
+  element::HexCoords c{};
+  for (std::size_t i = 0; i < 8; ++i) {
+    c.x[i] = x[i][0];
+    c.y[i] = x[i][1];
+    c.z[i] = x[i][2];
   }
-  double j[3][3] = {};  // j[a][b] = d x_b / d xi_a
-  for (int i = 0; i < 8; ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        j[a][b] += dn[i][a] * x[static_cast<std::size_t>(i)][static_cast<std::size_t>(b)];
-  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
-                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
-                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
-  if (!(std::abs(det) > 0.0))
-    return 0.0;
-  const double inv = 1.0 / det;
-  double ji[3][3];
-  ji[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) * inv;
-  ji[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) * inv;
-  ji[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) * inv;
-  ji[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) * inv;
-  ji[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) * inv;
-  ji[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) * inv;
-  ji[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) * inv;
-  ji[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) * inv;
-  ji[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) * inv;
-  // dN/dx_b = sum_a dN/dxi_a * dxi_a/dx_b, with dxi/dx = j^-1 (transposed layout).
-  for (int i = 0; i < 8; ++i)
-    for (int b = 0; b < 3; ++b)
-      g[i][b] = dn[i][0] * ji[b][0] + dn[i][1] * ji[b][1] + dn[i][2] * ji[b][2];
-  return det;
+  return c;
+}
+
+// K += w (grad N_i . k grad N_j), upper triangle, for gradients bx, by, bz.
+void add_point(const double* bx, const double* by, const double* bz, const Tensor3& k, double w,
+               double (&K)[8][8]) {
+  for (int j = 0; j < 8; ++j) {
+    const double kx = k[0][0] * bx[j] + k[0][1] * by[j] + k[0][2] * bz[j];
+    const double ky = k[1][0] * bx[j] + k[1][1] * by[j] + k[1][2] * bz[j];
+    const double kz = k[2][0] * bx[j] + k[2][1] * by[j] + k[2][2] * bz[j];
+    for (int i = 0; i <= j; ++i)
+      K[i][j] += w * (bx[i] * kx + by[i] * ky + bz[i] * kz);
+  }
 }
 
 }  // namespace
@@ -89,27 +73,23 @@ double hex8_conductance(const std::array<Vec3, 8>& x, const Tensor3& k, bool one
   for (auto& row : K)
     for (double& v : row)
       v = 0.0;
-  const double gp = 1.0 / std::sqrt(3.0);
-  const int points = one_point ? 1 : 8;
+  const element::HexCoords c = coords(x);
   double volume = 0.0;
-  for (int p = 0; p < points; ++p) {
-    const double xi = one_point ? 0.0 : gp * kXi[p];
-    const double eta = one_point ? 0.0 : gp * kEta[p];
-    const double zeta = one_point ? 0.0 : gp * kZeta[p];
-    const double w = one_point ? 8.0 : 1.0;
-    double g[8][3];
-    const double det = hex8_gradients(x, xi, eta, zeta, g);
-    if (!(det > 0.0))
-      return std::min(det, 0.0);  // inverted (or non-finite: NaN)
-    volume += w * det;
-    double kg[8][3];  // k grad N_j
-    for (int j = 0; j < 8; ++j)
-      for (std::size_t a = 0; a < 3; ++a)
-        kg[j][a] = k[a][0] * g[j][0] + k[a][1] * g[j][1] + k[a][2] * g[j][2];
-    const double wd = w * det;
-    for (int i = 0; i < 8; ++i)
-      for (int j = i; j < 8; ++j)
-        K[i][j] += wd * (g[i][0] * kg[j][0] + g[i][1] * kg[j][1] + g[i][2] * kg[j][2]);
+  if (one_point) {
+    // The exact volume-average gradient (Flanagan-Belytschko), as the one-point solid uses.
+    element::UniformGradient g;
+    if (!element::uniform_gradient(c, g))
+      return std::min(g.volume, 0.0);
+    add_point(g.bx, g.by, g.bz, k, g.volume, K);
+    volume = g.volume;
+  } else {
+    element::GaussGradients g;
+    if (!element::gauss_gradients(c, g))
+      return 0.0;  // a non-positive Jacobian at a Gauss point
+    for (int q = 0; q < 8; ++q) {
+      add_point(g.bx[q], g.by[q], g.bz[q], k, g.weight_det[q], K);
+      volume += g.weight_det[q];
+    }
   }
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < i; ++j)
@@ -118,13 +98,9 @@ double hex8_conductance(const std::array<Vec3, 8>& x, const Tensor3& k, bool one
 }
 
 double hex8_volume(const std::array<Vec3, 8>& x) {
-  const double gp = 1.0 / std::sqrt(3.0);
-  double volume = 0.0;
-  for (int p = 0; p < 8; ++p) {
-    double g[8][3];
-    volume += hex8_gradients(x, gp * kXi[p], gp * kEta[p], gp * kZeta[p], g);
-  }
-  return volume;
+  element::UniformGradient g;
+  element::uniform_gradient(coords(x), g);
+  return g.volume;  // exact for the trilinear element, raw when not positive
 }
 
 double shell_conductance(const std::array<Vec3, 4>& x, bool triangle, const Tensor3& k, double t,

@@ -29,6 +29,45 @@ bool is_triangle(const Index* c) {
   return c[3] == c[2];
 }
 
+// Calls f(thermal material, nodes, corners, volume) for every element of a part that conducts,
+// on the reference geometry: a hexahedron's 8 nodes and volume, a shell's 4 (a triangle's 3)
+// and its area times its initial thickness.
+template <class F>
+void for_each_conducting_element(const core::Model& model, F&& f) {
+  const auto node_xyz = [&](Index i) {
+    return Vec3{model.x0[idx(i)], model.y0[idx(i)], model.z0[idx(i)]};
+  };
+  for (const core::SolidBlock& b : model.solid_blocks) {
+    const Index mat = model.parts[idx(b.part)].thermal_material;
+    if (mat < 0)
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[8 * e];
+      std::array<Vec3, 8> x;
+      for (std::size_t k = 0; k < 8; ++k)
+        x[k] = node_xyz(c[k]);
+      f(mat, c, 8, hex8_volume(x));
+    }
+  }
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    const Index mat = model.parts[idx(b.part)].thermal_material;
+    if (mat < 0)
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[4 * e];
+      const bool tri = is_triangle(c);
+      std::array<Vec3, 4> x;
+      for (std::size_t k = 0; k < 4; ++k)
+        x[k] = node_xyz(c[k]);
+      const int corners = tri ? 3 : 4;
+      double t0 = 0.0;
+      for (int k = 0; k < corners; ++k)
+        t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
+      f(mat, c, corners, face_area(x, tri) * t0);
+    }
+  }
+}
+
 }  // namespace
 
 struct HeatSolver::Matrices {
@@ -57,56 +96,15 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
     : model_(model), m_(std::make_unique<Matrices>()) {
   const std::size_t n = model.node_count();
   unknown_.assign(n, -1);
-  const auto conducts = [&](Index part) { return model.parts[idx(part)].thermal_material >= 0; };
+  // Capacity per node, and every node of a conducting element an unknown (in node order).
   std::vector<double> capacity(n, 0.0);
-  const auto node_xyz = [&](Index i) {
-    return Vec3{model.x0[idx(i)], model.y0[idx(i)], model.z0[idx(i)]};
-  };
-  for (const core::SolidBlock& b : model.solid_blocks) {
-    if (!conducts(b.part))
-      continue;
-    const core::ThermalMaterial& tm =
-        model.thermal_materials[idx(model.parts[idx(b.part)].thermal_material)];
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const Index* c = &b.connectivity[8 * e];
-      std::array<Vec3, 8> x;
-      for (std::size_t k = 0; k < 8; ++k)
-        x[k] = node_xyz(c[k]);
-      const double share = tm.density * tm.heat_capacity * hex8_volume(x) / 8.0;
-      for (std::size_t k = 0; k < 8; ++k)
-        capacity[idx(c[k])] += share;
+  for_each_conducting_element(model, [&](Index mat, const Index* c, int corners, double volume) {
+    const core::ThermalMaterial& tm = model.thermal_materials[idx(mat)];
+    for (int k = 0; k < corners; ++k) {
+      capacity[idx(c[k])] += tm.density * tm.heat_capacity * volume / corners;
+      unknown_[idx(c[k])] = 0;
     }
-  }
-  for (const core::ShellBlock& b : model.shell_blocks) {
-    if (!conducts(b.part))
-      continue;
-    const core::ThermalMaterial& tm =
-        model.thermal_materials[idx(model.parts[idx(b.part)].thermal_material)];
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const Index* c = &b.connectivity[4 * e];
-      const bool tri = is_triangle(c);
-      std::array<Vec3, 4> x;
-      for (std::size_t k = 0; k < 4; ++k)
-        x[k] = node_xyz(c[k]);
-      const int corners = tri ? 3 : 4;
-      double t0 = 0.0;
-      for (int k = 0; k < corners; ++k)
-        t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
-      const double share = tm.density * tm.heat_capacity * face_area(x, tri) * t0 / corners;
-      for (int k = 0; k < corners; ++k)
-        capacity[idx(c[k])] += share;
-    }
-  }
-  // Every node of a conducting element is an unknown, in node order.
-  const auto mark = [&](const auto& blocks, std::size_t per) {
-    for (const auto& b : blocks)
-      if (conducts(b.part))
-        for (Index node : b.connectivity)
-          unknown_[idx(node)] = 0;
-    (void)per;
-  };
-  mark(model.solid_blocks, 8);
-  mark(model.shell_blocks, 4);
+  });
   for (std::size_t i = 0; i < n; ++i) {
     if (unknown_[i] == 0) {
       unknown_[i] = static_cast<Index>(nodes_.size());
@@ -123,47 +121,14 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
   m.dt.setZero(static_cast<Eigen::Index>(u));
 
   // Heat generation: each element's volume share, per material.
-  for (const core::SolidBlock& b : model.solid_blocks) {
-    if (!conducts(b.part))
-      continue;
-    const Index mat = model.parts[idx(b.part)].thermal_material;
+  for_each_conducting_element(model, [&](Index mat, const Index* c, int corners, double volume) {
     if (model.thermal_materials[idx(mat)].generation == 0.0)
-      continue;
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const Index* c = &b.connectivity[8 * e];
-      std::array<Vec3, 8> x;
-      for (std::size_t k = 0; k < 8; ++k)
-        x[k] = node_xyz(c[k]);
-      const double share = hex8_volume(x) / 8.0;
-      for (std::size_t k = 0; k < 8; ++k) {
-        generation_.push_back({unknown_[idx(c[k])], share});
-        generation_material_.push_back(mat);
-      }
+      return;
+    for (int k = 0; k < corners; ++k) {
+      generation_.push_back({unknown_[idx(c[k])], volume / corners});
+      generation_material_.push_back(mat);
     }
-  }
-  for (const core::ShellBlock& b : model.shell_blocks) {
-    if (!conducts(b.part))
-      continue;
-    const Index mat = model.parts[idx(b.part)].thermal_material;
-    if (model.thermal_materials[idx(mat)].generation == 0.0)
-      continue;
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const Index* c = &b.connectivity[4 * e];
-      const bool tri = is_triangle(c);
-      std::array<Vec3, 4> x;
-      for (std::size_t k = 0; k < 4; ++k)
-        x[k] = node_xyz(c[k]);
-      const int corners = tri ? 3 : 4;
-      double t0 = 0.0;
-      for (int k = 0; k < corners; ++k)
-        t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
-      const double share = face_area(x, tri) * t0 / corners;
-      for (int k = 0; k < corners; ++k) {
-        generation_.push_back({unknown_[idx(c[k])], share});
-        generation_material_.push_back(mat);
-      }
-    }
-  }
+  });
 
   // Prescribed temperatures of conducting nodes; those active at t = 0 hold from the start.
   for (std::size_t h = 0; h < model.temperature_histories.size(); ++h) {
@@ -236,7 +201,7 @@ double HeatSolver::step_length(double dt_mech) const {
 
 // The conductance on the current geometry, colour by colour (a colour's elements share no
 // node, hence no matrix entry: they add in parallel without races).
-void HeatSolver::assemble(const Geometry& g, double /*scale*/) {
+void HeatSolver::assemble(const Geometry& g) {
   Matrices& m = *m_;
   double* values = m.K.valuePtr();
   std::fill(values, values + m.K.nonZeros(), 0.0);
@@ -352,7 +317,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     build_pattern();
 
   if (since_assembly_ == 0 || since_assembly_ >= std::max(1, c.reassemble_every)) {
-    assemble(g, scale);
+    assemble(g);
     since_assembly_ = 0;
   }
   ++since_assembly_;

@@ -62,6 +62,11 @@ void store_once(KeywordInput& in, std::optional<Desc>& slot, Desc desc) {
   slot = std::move(desc);
 }
 
+/// A written 0 (or a blank) stands for LS-DYNA's default in the fields that use it so.
+inline double zero_means(double value, double fallback) {
+  return value == 0.0 ? fallback : value;
+}
+
 /// True when a data line that is not blank is left in the block.
 inline bool has_more_cards(const KeywordInput& in) {
   for (const DataLine& line : in.remaining()) {

@@ -352,11 +352,6 @@ void read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& l
   }
 }
 
-/// A written 0 (or blank) means LS-DYNA's default for these fields.
-double zero_means(double value, double fallback) {
-  return value == 0.0 ? fallback : value;
-}
-
 void read_contact(KeywordInput& in, model::ContactKind kind) {
   model::ContactDesc c;
   c.kind = kind;

@@ -51,11 +51,6 @@ void reject_negative_curve(KeywordInput& in, int line, std::string_view field, d
   }
 }
 
-/// A written 0 means LS-DYNA's default for these fields.
-double zero_means(double value, double fallback) {
-  return value == 0.0 ? fallback : value;
-}
-
 // --- *CONTROL_SOLUTION
 constexpr std::array kSolutionFields{
     FieldSpec{.name = "SOLN",

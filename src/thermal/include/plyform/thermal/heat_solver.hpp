@@ -90,7 +90,8 @@ class HeatSolver {
 
  private:
   struct Matrices;
-  void assemble(const Geometry& g, double scale);
+  // The conductance (unscaled by TSF) on the current geometry.
+  void assemble(const Geometry& g);
   void build_pattern();
   const core::Model& model_;
   std::vector<core::Index> nodes_;    // unknown -> node
