@@ -97,6 +97,17 @@ std::string_view material_name(const core::Material& m) {
   return material::law_info(m).keyword;
 }
 
+// ", thermal expansion alpha ..." of a block that expands with temperature, else empty.
+std::string expansion_text(const core::LoadCurve& alpha) {
+  if (alpha.x.empty())
+    return {};
+  const auto [lo, hi] = std::minmax_element(alpha.y.begin(), alpha.y.end());
+  if (*lo == *hi)
+    return fmt::format(", thermal expansion alpha {:g} 1/temperature", *lo);
+  return fmt::format(", thermal expansion alpha {:g} to {:g} 1/temperature over [{:g}, {:g}]", *lo,
+                     *hi, alpha.x.front(), alpha.x.back());
+}
+
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
 // runtime model cannot be built.
 void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream& out) {
@@ -129,9 +140,9 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
     const std::string_view law = material_name(mat);
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
-    fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}\n",
+    fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}{}\n",
                part.id, part.title, b.size(), static_cast<int>(b.formulation), law, b.hourglass.ihq,
-               b.hourglass.qm);
+               b.hourglass.qm, expansion_text(b.expansion));
     if (std::holds_alternative<core::RigidMaterial>(mat))
       continue;  // moves as a body
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -145,8 +156,8 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
   for (const auto& b : m.shell_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
-    fmt::print(out, "  part {} '{}': {} shells, NIP {}, {}\n", part.id, part.title, b.size(), b.nip,
-               material_name(mat));
+    fmt::print(out, "  part {} '{}': {} shells, NIP {}, {}{}\n", part.id, part.title, b.size(),
+               b.nip, material_name(mat), expansion_text(b.expansion));
     if (std::holds_alternative<core::RigidMaterial>(mat))
       continue;
     for (std::size_t e = 0; e < b.size(); ++e) {
@@ -204,8 +215,12 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                                 : "implicit",
                t.solver == 12 ? "diagonally scaled conjugate-gradient" : "direct LDL^T",
                t.tsf_curve >= 0 ? std::string("from a curve") : fmt::format("{:g}", t.tsf));
-    if (!t.thermal_only && t.fwork > 0.0)
-      fmt::print(out, "  note: plastic work does not heat the parts yet (FWORK)\n");
+    if (!t.thermal_only && t.fwork > 0.0) {
+      fmt::print(out,
+                 "  plastic work heats the parts: FWORK {:g} of the plastic dissipation, times "
+                 "EQHEAT {:g}\n",
+                 t.fwork, t.eqheat);
+    }
   }
   fmt::print(out, "termination time: {:g}\n", m.controls.end_time);
   if (m.output.d3dump_cycles > 0) {

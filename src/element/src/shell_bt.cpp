@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <variant>
@@ -124,6 +125,11 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   constexpr std::size_t kPoints = kChunk * static_cast<std::size_t>(kMaxNip);
   double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
   double pdzz[kPoints], pcos[kPoints], psin[kPoints];
+  // Temperature (thermal blocks) and the plastic strain before the law (plastic work heat).
+  double ptemp[kPoints], peps0[kPoints], eth_k[kChunk];
+  const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
+  const bool expands = thermal && !block.expansion.x.empty();
+  const bool plastic_heat = out.plastic_work != nullptr;
   Geometry gk[kChunk];
   double vlk[kChunk][4][3], wlk[kChunk][4][3], tk[kChunk];
   const auto unip = static_cast<std::size_t>(nip);
@@ -338,6 +344,30 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         pdzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
       }
       work_old[k_el] = point_work(st, unip * e, k_el * unip);
+      eth_k[k_el] = 0.0;
+      if (thermal) {
+        // The element's temperature: the mean of its nodes' (a triangle's three). Thermal
+        // expansion takes alpha(T_mid) dT off the in-plane increments the law sees (the
+        // stress work above and below counts the total strain: the forces do that work).
+        const core::Index* cn = &block.connectivity[4 * e];
+        const double* tn = nv.temperature;
+        const auto n0 = static_cast<std::size_t>(cn[0]), n1 = static_cast<std::size_t>(cn[1]),
+                   n2 = static_cast<std::size_t>(cn[2]), n3 = static_cast<std::size_t>(cn[3]);
+        const double t_new = n2 == n3 ? (tn[n0] + tn[n1] + tn[n2]) / 3.0
+                                      : 0.25 * (tn[n0] + tn[n1] + tn[n2] + tn[n3]);
+        if (dt > 0.0) {
+          const double t_old = st.temperature[e];
+          if (expands)
+            eth_k[k_el] = block.expansion(0.5 * (t_old + t_new)) * (t_new - t_old);
+          st.temperature[e] = t_new;
+        }
+        for (int k = 0; k < nip; ++k) {
+          const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
+          pdxx[at] -= eth_k[k_el];
+          pdyy[at] -= eth_k[k_el];
+          ptemp[at] = t_new;
+        }
+      }
       const double x[4][3] = {{LX[0][k_el], LY[0][k_el], LZ[0][k_el]},
                               {LX[1][k_el], LY[1][k_el], LZ[1][k_el]},
                               {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
@@ -371,7 +401,20 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       }
       if constexpr (per_point > 0)
         pts.history = &st.history[per_point * q0];
+      if (thermal)
+        pts.temperature = ptemp;
+      if (plastic_heat)
+        std::copy_n(&st.eps_p[q0], unip * chunk, peps0);
       Law::update_shell(mat, unip * chunk, pts);
+      if (expands) {
+        // Back to the total increments (stress work), and the free thermal thickness strain.
+        for (std::size_t at = 0; at < unip * chunk; ++at) {
+          const double eth = eth_k[at / unip];
+          pdxx[at] += eth;
+          pdyy[at] += eth;
+          pdzz[at] += eth;
+        }
+      }
     }
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
@@ -400,6 +443,26 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       const double a = g.area;
       r.internal_energy += 0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * t * a;
       st.thickness[e] = t * (1.0 + tz);
+      if (plastic_heat) {
+        // Plastic dissipation sigma_eq d eps_p (the backward-Euler return: sigma : d eps^p),
+        // plane-stress von Mises on the in-plane stress (the transverse shear stays elastic).
+        double wp = 0.0;
+        for (int k = 0; k < nip; ++k) {
+          const std::size_t q = q0 + static_cast<std::size_t>(k);
+          const double de = st.eps_p[q] - peps0[k_el * unip + static_cast<std::size_t>(k)];
+          if (de > 0.0) {
+            const double x = st.s[0][q], y = st.s[1][q], xy = st.s[2][q];
+            wp += weight[k] * std::sqrt(x * x + y * y - x * y + 3.0 * xy * xy) * de;
+          }
+        }
+        wp *= 0.5 * t * a;
+        if (wp > 0.0) {
+          const bool tri = conn[2] == conn[3];
+          const double share = wp / (tri ? 3.0 : 4.0);
+          for (int i = 0; i < (tri ? 3 : 4); ++i)
+            out.plastic_work[static_cast<std::size_t>(conn[i])] += share;
+        }
+      }
       double fl[4][3], ml[4][2];
       for (int i = 0; i < 4; ++i) {
         fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);

@@ -1,4 +1,5 @@
 #include "plyform/element/solid_kernels.hpp"
+#include <algorithm>
 
 #include <cmath>
 #include <type_traits>
@@ -56,7 +57,7 @@ struct PointScratch {
 
 template <class M>
 void update_material(const M& m, std::size_t n, PointScratch& s, double dt, SolidBlockState& st,
-                     std::size_t first_point) {
+                     std::size_t first_point, const double* temperature) {
   using Law = LawOf<M>;
   const double* f[9] = {s.f[0], s.f[1], s.f[2], s.f[3], s.f[4], s.f[5], s.f[6], s.f[7], s.f[8]};
   material::SolidPoints p;
@@ -72,7 +73,39 @@ void update_material(const M& m, std::size_t n, PointScratch& s, double dt, Soli
   p.eps_p = &st.eps_p[first_point];
   constexpr std::size_t per_point = Law::history.size();
   p.history = per_point > 0 ? &st.history[per_point * first_point] : nullptr;
+  p.temperature = temperature;
   Law::update_solid(m, p);
+}
+
+// The element's temperature (the mean of its nodes') and, over a step (dt > 0), the thermal
+// strain increment alpha(T_mid) dT since its last update, which becomes the new one.
+inline double element_temperature(const core::SolidBlock& block, SolidBlockState& st,
+                                  const double* nodal, std::size_t e, double dt, bool expands,
+                                  double& thermal_strain) {
+  const core::Index* cn = &block.connectivity[8 * e];
+  double t_new = 0.0;
+  for (int i = 0; i < 8; ++i)
+    t_new += nodal[static_cast<std::size_t>(cn[i])];
+  t_new *= 0.125;
+  thermal_strain = 0.0;
+  if (dt > 0.0) {
+    const double t_old = st.temperature[e];
+    if (expands)
+      thermal_strain = block.expansion(0.5 * (t_old + t_new)) * (t_new - t_old);
+    st.temperature[e] = t_new;
+  }
+  return t_new;
+}
+
+// sqrt(3/2 s : s) of point p's stress.
+inline double von_mises(const SolidBlockState& st, std::size_t p) {
+  const double sxx = st.s[0][p], syy = st.s[1][p], szz = st.s[2][p];
+  const double m = (sxx + syy + szz) / 3.0;
+  const double dx = sxx - m, dy = syy - m, dz = szz - m;
+  const double ss =
+      dx * dx + dy * dy + dz * dz +
+      2.0 * (st.s[3][p] * st.s[3][p] + st.s[4][p] * st.s[4][p] + st.s[5][p] * st.s[5][p]);
+  return std::sqrt(1.5 * ss);
 }
 
 // L on the configuration at t_{n+1} mapped to the mid-step configuration:
@@ -247,6 +280,10 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
   alignas(64) double F[3][8][kLanes];
   alignas(64) double L[9][kLanes], S[6][kLanes], HG[12][kLanes];
   alignas(64) double vol[kLanes], bsq[kLanes], power[kLanes];
+  double temp[kLanes], eth[kLanes], eps0[kLanes], heat[kLanes];
+  const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
+  const bool expands = thermal && !block.expansion.x.empty();
+  const bool plastic_heat = out.plastic_work != nullptr;
   PointScratch s;
 
   for (std::size_t c0 = begin; c0 < end; c0 += kLanes) {
@@ -384,10 +421,36 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
     };
     add_power();
-    update_material(mat, n, s, dt, st, c0);
+    // Thermal expansion: the law sees the mechanical rate D - alpha dT/dt I; the stress work
+    // counts the total rate (the forces do that work).
+    if (thermal) {
+      for (std::size_t k = 0; k < n; ++k) {
+        temp[k] = element_temperature(block, st, nv.temperature, c0 + k, dt, expands, eth[k]);
+        eth[k] = dt > 0.0 ? eth[k] / dt : 0.0;
+        s.d[0][k] -= eth[k];
+        s.d[1][k] -= eth[k];
+        s.d[2][k] -= eth[k];
+      }
+    }
+    if (plastic_heat)
+      std::copy_n(&st.eps_p[c0], n, eps0);
+    update_material(mat, n, s, dt, st, c0, thermal ? temp : nullptr);
+    if (expands) {
+      for (std::size_t k = 0; k < n; ++k) {
+        s.d[0][k] += eth[k];
+        s.d[1][k] += eth[k];
+        s.d[2][k] += eth[k];
+      }
+    }
     add_power();
     for (std::size_t k = 0; k < n; ++k)
       r.internal_energy += 0.5 * power_sum[k] * vol[k] * dt;
+    if (plastic_heat) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const double de = st.eps_p[c0 + k] - eps0[k];
+        heat[k] = de > 0.0 ? 0.125 * vol[k] * von_mises(st, c0 + k) * de : 0.0;
+      }
+    }
 
     for (int c = 0; c < 6; ++c)
       for (std::size_t k = 0; k < kLanes; ++k)
@@ -427,6 +490,8 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         out.fx[node] += F[0][i][k];
         out.fy[node] += F[1][i][k];
         out.fz[node] += F[2][i][k];
+        if (plastic_heat)
+          out.plastic_work[node] += heat[k];
       }
       r.hourglass_energy += power[k] * dt;
     }
@@ -446,6 +511,10 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
   GaussGradients gg[kElems];
   UniformGradient mean[kElems];
   PointScratch s;
+  double temp[kChunk], eth[kElems], eps0[kChunk];
+  const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
+  const bool expands = thermal && !block.expansion.x.empty();
+  const bool plastic_heat = out.plastic_work != nullptr;
   for (std::size_t c0 = begin; c0 < end; c0 += kElems) {
     const std::size_t n = std::min(kElems, end - c0);
     for (std::size_t k = 0; k < n; ++k) {
@@ -511,7 +580,29 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
       }
     };
     add_power();
-    update_material(mat, 8 * n, s, dt, st, 8 * c0);
+    if (thermal) {  // as one_point, the element's temperature at its 8 points
+      for (std::size_t k = 0; k < n; ++k) {
+        const double te =
+            element_temperature(block, st, nv.temperature, c0 + k, dt, expands, eth[k]);
+        eth[k] = dt > 0.0 ? eth[k] / dt : 0.0;
+        for (std::size_t q = 0; q < 8; ++q) {
+          temp[8 * k + q] = te;
+          s.d[0][8 * k + q] -= eth[k];
+          s.d[1][8 * k + q] -= eth[k];
+          s.d[2][8 * k + q] -= eth[k];
+        }
+      }
+    }
+    if (plastic_heat)
+      std::copy_n(&st.eps_p[8 * c0], np, eps0);
+    update_material(mat, 8 * n, s, dt, st, 8 * c0, thermal ? temp : nullptr);
+    if (expands) {
+      for (std::size_t p = 0; p < np; ++p) {
+        s.d[0][p] += eth[p / 8];
+        s.d[1][p] += eth[p / 8];
+        s.d[2][p] += eth[p / 8];
+      }
+    }
     add_power();
     for (std::size_t p = 0; p < np; ++p)
       r.internal_energy += 0.5 * power_sum[p] * gg[p / 8].weight_det[p % 8] * dt;
@@ -536,12 +627,23 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
           f[3 * i + 2] += w * (szx * bx[i] + syz * by[i] + (szz - pm) * bz[i] + pm * bm.bz[i]);
         }
       }
+      double heat = 0.0;
+      if (plastic_heat) {
+        for (std::size_t q = 0; q < 8; ++q) {
+          const double de = st.eps_p[8 * e + q] - eps0[8 * k + q];
+          if (de > 0.0)
+            heat += gg[k].weight_det[q] * von_mises(st, 8 * e + q) * de;
+        }
+        heat *= 0.125;
+      }
       const core::Index* nodes = &block.connectivity[8 * e];
       for (int i = 0; i < 8; ++i) {
         const auto node = static_cast<std::size_t>(nodes[i]);
         out.fx[node] += f[3 * i];
         out.fy[node] += f[3 * i + 1];
         out.fz[node] += f[3 * i + 2];
+        if (plastic_heat)
+          out.plastic_work[node] += heat;
       }
     }
   }

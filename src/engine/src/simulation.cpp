@@ -84,11 +84,15 @@ struct ItemResult {
   std::size_t failed_element = 0;
 };
 
-std::string time_text(double t) {
+// A time, temperature or other value to 6 significant digits.
+std::string value_text(double v) {
   std::ostringstream os;
   os.precision(6);
-  os << t;
+  os << v;
   return os.str();
+}
+std::string time_text(double t) {
+  return value_text(t);
 }
 
 bool all_blocks_coloured(const core::Model& model) {
@@ -182,8 +186,24 @@ struct Simulation::State {
   std::vector<std::array<double, 3>> rigid_free;
   std::vector<core::ContactHeatLink> heat_links;  // the _THERMAL contacts' slave nodes
   std::vector<double> friction_heat;              // per node, since the last thermal step
+  std::vector<double> plastic_heat;               // per node, the step's, in thermal units
+  // Plastic dissipation per node since the last thermal step (mechanical units; empty unless
+  // FWORK turns it into heat).
+  std::vector<double> plastic_work;
+  // The nodes of the *MAT_ELASTIC_PLASTIC_THERMAL blocks with their tables' ranges: a
+  // temperature outside stops the run. temperatures_moved: they may have changed since the
+  // last check.
+  struct TemperatureRange {
+    std::vector<core::Index> nodes;
+    double low = 0.0, high = 0.0;
+    core::GlobalId part = 0;
+  };
+  std::vector<TemperatureRange> temperature_ranges;
+  bool temperatures_moved = true;
 
   void set_up_run();
+  void set_up_element_temperatures();
+  bool temperatures_in_range();
   void visit_state(core::StateArchive& a);
 
   // The passes of a cycle, in order.
@@ -265,7 +285,10 @@ void Simulation::State::set_up_run() {
   if (model.thermal.enabled) {
     heat.emplace(model, std::span<double>(s.temperature));
     thermal_only = model.thermal.thermal_only;
+    if (!thermal_only && model.thermal.fwork > 0.0)
+      plastic_work.assign(n, 0.0);
   }
+  set_up_element_temperatures();
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
   res.physical_mass = mass.physical;
   res.added_mass = mass.added;
@@ -391,6 +414,81 @@ void Simulation::State::set_up_run() {
   set_up = true;
 }
 
+// Blocks whose law reads temperatures or that expand with heat keep each element's temperature
+// (the mean of its nodes'), from the initial one; the *MAT_ELASTIC_PLASTIC_THERMAL blocks'
+// nodes are checked against their tables.
+void Simulation::State::set_up_element_temperatures() {
+  const auto reads = [&](const auto& blk) {
+    return material::law_reads_temperature(
+               model.materials[static_cast<std::size_t>(blk.material)]) ||
+           !blk.expansion.x.empty();
+  };
+  const auto mean = [&](const core::Index* cn, int count) {
+    double sum = 0.0;
+    for (int i = 0; i < count; ++i)
+      sum += s.temperature[static_cast<std::size_t>(cn[i])];
+    return sum / count;
+  };
+  const auto add_range = [&](const auto& blk) {
+    const auto* m = std::get_if<core::ElasticPlasticThermal>(
+        &model.materials[static_cast<std::size_t>(blk.material)]);
+    if (m == nullptr)
+      return;
+    TemperatureRange r;
+    r.nodes.assign(blk.connectivity.begin(), blk.connectivity.end());
+    std::sort(r.nodes.begin(), r.nodes.end());
+    r.nodes.erase(std::unique(r.nodes.begin(), r.nodes.end()), r.nodes.end());
+    r.low = m->temperature.front();
+    r.high = m->temperature.back();
+    r.part = model.parts[static_cast<std::size_t>(blk.part)].id;
+    temperature_ranges.push_back(std::move(r));
+  };
+  for (std::size_t b = 0; b < solids.size(); ++b) {
+    const core::SolidBlock& blk = model.solid_blocks[b];
+    if (!reads(blk))
+      continue;
+    solids[b].temperature.resize(blk.size());
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      solids[b].temperature[e] = mean(&blk.connectivity[8 * e], 8);
+    add_range(blk);
+  }
+  for (std::size_t b = 0; b < shells.size(); ++b) {
+    const core::ShellBlock& blk = model.shell_blocks[b];
+    if (!reads(blk))
+      continue;
+    shells[b].temperature.resize(blk.size());
+    for (std::size_t e = 0; e < blk.size(); ++e) {
+      const core::Index* cn = &blk.connectivity[4 * e];
+      shells[b].temperature[e] = mean(cn, cn[2] == cn[3] ? 3 : 4);
+    }
+    add_range(blk);
+  }
+  view.temperature = s.temperature.data();
+}
+
+// LS-DYNA stops a *MAT_ELASTIC_PLASTIC_THERMAL run whose temperatures leave the material's
+// table (its constants are not defined there); false (with the diagnosis) when one did.
+bool Simulation::State::temperatures_in_range() {
+  if (!temperatures_moved || temperature_ranges.empty())
+    return true;
+  temperatures_moved = false;
+  for (const TemperatureRange& r : temperature_ranges) {
+    for (core::Index i : r.nodes) {
+      const double ti = s.temperature[static_cast<std::size_t>(i)];
+      if (!(ti >= r.low && ti <= r.high)) {
+        sync();
+        fail("node " + std::to_string(model.node_id[static_cast<std::size_t>(i)]) + " of part " +
+             std::to_string(r.part) + " is at temperature " + value_text(ti) + " at t = " +
+             time_text(t) + ", outside the *MAT_ELASTIC_PLASTIC_THERMAL table of its material [" +
+             value_text(r.low) + ", " + value_text(r.high) +
+             "] (LS-DYNA stops there too: extend the table to the temperatures the run reaches)");
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 void Simulation::State::pack() {
 #pragma omp parallel for schedule(static) proc_bind(close)
   for (long li = 0; li < static_cast<long>(n); ++li) {
@@ -408,7 +506,8 @@ void Simulation::State::pack() {
 // Element forces at the current positions into `ir`; the nodal force arrays must be zero and
 // the packed copy current (the positions and velocity passes see to both).
 void Simulation::State::internal(double dt_step) {
-  const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data()};
+  const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data(),
+                                    plastic_work.empty() ? nullptr : plastic_work.data()};
   const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
   const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
 #pragma omp parallel proc_bind(close)
@@ -841,6 +940,7 @@ bool Simulation::State::internal_forces() {
 // External nodal loads and prescribed temperatures at t_{n+1}.
 void Simulation::State::loads_and_temperatures() {
   bc.loads(t, s);
+  temperatures_moved = temperatures_moved || !model.temperature_histories.empty();
   for (const core::TemperatureHistory& th : model.temperature_histories) {
     if (t >= th.birth && t <= th.death) {
       s.temperature[static_cast<std::size_t>(th.node)] =
@@ -873,6 +973,16 @@ bool Simulation::State::heat_conduction(bool now) {
       e *= model.thermal.eqheat;  // mechanical work in thermal units
     mechanical.friction = friction_heat.data();
   }
+  if (!plastic_work.empty()) {
+    // FWORK of the plastic dissipation since the last thermal step, in thermal units.
+    plastic_heat.resize(n);
+    const double f = model.thermal.fwork * model.thermal.eqheat;
+    for (std::size_t i = 0; i < n; ++i) {
+      plastic_heat[i] = f * plastic_work[i];
+      plastic_work[i] = 0.0;
+    }
+    mechanical.plastic = plastic_heat.data();
+  }
   const thermal::StepReport r =
       heat->advance(t, g, std::span<double>(s.temperature), mechanical,
                     std::span<const core::ContactHeatLink>(heat_links), dt_mech);
@@ -881,6 +991,7 @@ bool Simulation::State::heat_conduction(bool now) {
     fail(r.error + " (cycle " + std::to_string(cycle) + ")");
     return false;
   }
+  temperatures_moved = true;
   if (!r.converged && !warned_thermal) {
     warned_thermal = true;
     res.warnings.push_back("the thermal conjugate gradients did not reach RELTOL in " +
@@ -938,10 +1049,10 @@ bool Simulation::State::cycle_once() {
   positions();
   t += dt;
   ++cycle;
+  loads_and_temperatures();  // the elements see the prescribed temperatures of t_{n+1}
   if (!internal_forces())
     return false;
-  loads_and_temperatures();
-  if (!heat_conduction(false))
+  if (!heat_conduction(false) || !temperatures_in_range())
     return false;
   contact_forces();
   double dt_next = 0.0;
@@ -994,6 +1105,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.fixed("volume", std::span<double>(st.volume));
     a.fixed("dt_factor", std::span<double>(st.dt_factor));
     a.fixed("law_history", std::span<double>(st.history));
+    a.fixed("temperature", std::span<double>(st.temperature));
   }
   for (std::size_t b = 0; b < shells.size(); ++b) {
     const auto scope = a.scope("shell_block/" + std::to_string(b));
@@ -1007,6 +1119,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.fixed("dt_factor", std::span<double>(st.dt_factor));
     a.fixed("area", std::span<double>(st.area));
     a.fixed("law_history", std::span<double>(st.history));
+    a.fixed("temperature", std::span<double>(st.temperature));
   }
   {
     const auto scope = a.scope("integrator");
@@ -1070,6 +1183,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     const auto scope = a.scope("thermal");
     heat->visit_state(a);
     a.value("warned", warned_thermal);
+    a.fixed("plastic_work", std::span<double>(plastic_work));
   }
 }
 

@@ -26,6 +26,8 @@ KeywordSpec mat_elastic_keyword();
 KeywordSpec mat_001_keyword();
 KeywordSpec mat_orthotropic_elastic_keyword();
 KeywordSpec mat_002_keyword();
+KeywordSpec mat_elastic_plastic_thermal_keyword();
+KeywordSpec mat_004_keyword();
 KeywordSpec mat_power_law_plasticity_keyword();
 KeywordSpec mat_018_keyword();
 KeywordSpec mat_rigid_keyword();
@@ -34,6 +36,7 @@ KeywordSpec mat_piecewise_linear_plasticity_keyword();
 KeywordSpec mat_024_keyword();
 KeywordSpec mat_mooney_rivlin_keyword();
 KeywordSpec mat_027_keyword();
+KeywordSpec mat_add_thermal_expansion_keyword();
 KeywordSpec mat_thermal_isotropic_keyword();
 KeywordSpec mat_thermal_orthotropic_keyword();
 KeywordSpec hourglass_keyword();
@@ -100,6 +103,8 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_001_keyword(),
       mat_orthotropic_elastic_keyword(),
       mat_002_keyword(),
+      mat_elastic_plastic_thermal_keyword(),
+      mat_004_keyword(),
       mat_power_law_plasticity_keyword(),
       mat_018_keyword(),
       mat_rigid_keyword(),
@@ -108,6 +113,7 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_024_keyword(),
       mat_mooney_rivlin_keyword(),
       mat_027_keyword(),
+      mat_add_thermal_expansion_keyword(),
       mat_thermal_isotropic_keyword(),
       mat_thermal_orthotropic_keyword(),
       hourglass_keyword(),

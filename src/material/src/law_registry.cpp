@@ -44,6 +44,12 @@ bool law_for_shells(const core::Material& m) {
   return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::for_shells; });
 }
 
+bool law_reads_temperature(const core::Material& m) {
+  return visit_law(m, [](auto tag, const auto&) {
+    return law_needs_temperature<typename decltype(tag)::type>();
+  });
+}
+
 std::size_t history_per_point(const core::Material& m) {
   return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::history.size(); });
 }

@@ -1,8 +1,10 @@
 #include "plyform/material/plasticity.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hardening.hpp"
+#include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material {
 
@@ -69,6 +71,48 @@ void solid_j2(const Law& m, std::size_t n, ConstSymView d, const double* w_xy, c
 }
 
 }  // namespace
+
+ThermalPlasticConstants constants_at(const core::ElasticPlasticThermal& m, double t) {
+  const std::vector<double>& x = m.temperature;
+  std::size_t i = 0;
+  double w = 0.0;  // the weight of point i + 1
+  if (x.size() > 1 && t > x.front()) {
+    if (t >= x.back()) {
+      i = x.size() - 2;
+      w = 1.0;
+    } else {
+      i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), t) - x.begin()) - 1;
+      w = (t - x[i]) / (x[i + 1] - x[i]);
+    }
+  }
+  const auto at = [&](const std::vector<double>& v) {
+    return v.size() > 1 ? v[i] + w * (v[i + 1] - v[i]) : v.front();
+  };
+  ThermalPlasticConstants c;
+  c.young = at(m.young);
+  c.poisson = at(m.poisson);
+  c.sigy = at(m.sigy);
+  const double etan = at(m.etan);
+  c.hardening = c.young * etan / (c.young - etan);
+  return c;
+}
+
+// Point by point: each point has its own constants. Views shifted to point p.
+void solid_update(const core::ElasticPlasticThermal& m, std::size_t n, ConstSymView d,
+                  const double* w_xy, const double* w_yz, const double* w_zx, double dt,
+                  const double* temperature, SymView sigma, double* eps_p) {
+  for (std::size_t p = 0; p < n; ++p) {
+    const ThermalPlasticConstants c = constants_at(m, temperature[p]);
+    const ConstSymView dp{d.xx + p, d.yy + p, d.zz + p, d.xy + p, d.yz + p, d.zx + p};
+    const SymView sp{sigma.xx + p, sigma.yy + p, sigma.zz + p,
+                     sigma.xy + p, sigma.yz + p, sigma.zx + p};
+    elastic_jaumann(core::ElasticMaterial{m.density, c.young, c.poisson}, 1, dp, w_xy + p, w_yz + p,
+                    w_zx + p, dt, sp);
+    radial_return_kernel(detail::LinearHardening{c.sigy, c.hardening},
+                         1.5 * c.young / (1.0 + c.poisson), 1, sp.xx, sp.yy, sp.zz, sp.xy, sp.yz,
+                         sp.zx, eps_p + p);
+  }
+}
 
 void solid_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, ConstSymView d,
                   const double* w_xy, const double* w_yz, const double* w_zx, double dt,

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "hardening.hpp"
+#include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material {
 
@@ -142,6 +143,22 @@ void shell_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, const
 
 void shell_update(const core::PowerLawPlasticity& m, std::size_t n, const ShellPoints& pts) {
   shell_j2(m, n, pts);
+}
+
+// Point by point with the constants at each point's temperature: the elastic trial and the
+// plane-stress return of *MAT_024, on arrays shifted to the point.
+void shell_update(const core::ElasticPlasticThermal& m, std::size_t n, const ShellPoints& pts) {
+  for (std::size_t p = 0; p < n; ++p) {
+    const ThermalPlasticConstants c = constants_at(m, pts.temperature[p]);
+    const double nu = c.poisson;
+    const double c11 = c.young / (1.0 - nu * nu);
+    plane_stress_elastic_kernel(1, c11, nu * c11, c.young / (1.0 + nu), nu / (1.0 - nu),
+                                pts.dxx + p, pts.dyy + p, pts.dxy + p, pts.dyz + p, pts.dzx + p,
+                                pts.sxx + p, pts.syy + p, pts.sxy + p, pts.syz + p, pts.szx + p,
+                                pts.dzz + p);
+    plane_stress_return_kernel(detail::LinearHardening{c.sigy, c.hardening}, c.young, nu, 1,
+                               pts.sxx + p, pts.syy + p, pts.sxy + p, pts.eps_p + p, pts.dzz + p);
+  }
 }
 
 void shell_update(const core::OrthotropicElasticMaterial& m, std::size_t n, const ShellPoints& pts,

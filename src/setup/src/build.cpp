@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "build_contact.hpp"
+#include "build_expansion.hpp"
 #include "build_thermal.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
@@ -150,7 +151,8 @@ struct Builder {
               p.where, "*PART", "MID",
               "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
                   " is not a law for solid elements (use *MAT_ELASTIC, *MAT_MOONEY-RIVLIN_RUBBER, "
-                  "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY or *MAT_RIGID)");
+                  "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
+                  "*MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
           continue;
         }
         core::SolidBlock b;
@@ -173,7 +175,8 @@ struct Builder {
           error(p.where, "*PART", "MID",
                 "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
                     " is not a law for shells (use *MAT_ELASTIC, *MAT_ORTHOTROPIC_ELASTIC, "
-                    "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY or *MAT_RIGID)");
+                    "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
+                    "*MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
           continue;
         }
         if (sec.nip < 1 || sec.nip > 5) {
@@ -411,6 +414,7 @@ BuildResult build(const model::ModelDesc& desc) {
   build_contacts(desc, b.m, b.out.errors, b.out.warnings);
   build_temperatures(desc, b.m, b.out.errors);
   build_thermal(desc, b.m, b.out.errors, b.out.warnings);
+  build_thermal_expansion(desc, b.m, b.out.errors, b.out.warnings);
   if (b.out.errors.empty())
     b.out.model = std::move(b.m);
   return std::move(b.out);

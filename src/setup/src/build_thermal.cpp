@@ -158,24 +158,6 @@ void build_thermal(const model::ModelDesc& d, core::Model& m, Diagnostics& error
       any = true;
     }
   }
-  // Plastic-work heat is not there yet: a coupled deck whose conducting parts can yield is
-  // told so, rather than FWORK being quietly without effect.
-  if (!c.thermal_only && c.fwork > 0.0) {
-    for (const core::Part& part : m.parts) {
-      if (part.thermal_material < 0)
-        continue;
-      const std::string_view kw =
-          material::law_info(m.materials[static_cast<std::size_t>(part.material)]).keyword;
-      if (kw.find("PLASTIC") != std::string_view::npos) {
-        warnings.push_back({d.thermal_solver ? d.thermal_solver->where : solution_where,
-                            "*CONTROL_THERMAL_SOLVER", "FWORK",
-                            "plastic work does not heat the parts yet (part " +
-                                std::to_string(part.id) + ", " + std::string(kw) +
-                                "): FWORK has no effect in this version"});
-        break;
-      }
-    }
-  }
   if (!any) {
     errors.push_back({solution_where, "*CONTROL_SOLUTION", "SOLN",
                       "SOLN = " + std::to_string(soln) +

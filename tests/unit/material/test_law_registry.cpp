@@ -24,6 +24,7 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
       {core::RigidMaterial{}, "*MAT_RIGID", 20, false, false},
       {core::PiecewiseLinearPlasticity{}, "*MAT_PIECEWISE_LINEAR_PLASTICITY", 24, true, true},
       {core::MooneyRivlinMaterial{}, "*MAT_MOONEY-RIVLIN_RUBBER", 27, true, false},
+      {core::ElasticPlasticThermal{}, "*MAT_ELASTIC_PLASTIC_THERMAL", 4, true, true},
   };
   std::set<std::string> keywords;
   for (const auto& c : cases) {

@@ -55,6 +55,18 @@ struct PowerLawPlasticity {
   double sigy = 0.0;
 };
 
+/// *MAT_ELASTIC_PLASTIC_THERMAL (004): J2 plasticity with bilinear isotropic hardening whose
+/// constants are tabulated against temperature (2..8 points, increasing temperatures): linear
+/// between the points. sigma_y(eps_p, T) = SIGY(T) + E_p(T) eps_p, E_p = E ETAN / (E - ETAN),
+/// hypoelastic with E(T), nu(T) at the end of the step; alpha(T) is the thermal expansion
+/// (the element kernels apply it, core::ShellBlock::expansion). A temperature outside the table
+/// stops the run (LS-DYNA's meaning).
+struct ElasticPlasticThermal {
+  double density = 0.0;
+  std::vector<double> temperature;
+  std::vector<double> young, poisson, alpha, sigy, etan;
+};
+
 /// *MAT_ORTHOTROPIC_ELASTIC (002): elastic constants in the material axes a, b, c. For shells
 /// the axes follow AOPT: 0 = the element's local axes (a along nodes 1-2), 2 = the global
 /// vector `a` projected on the shell (with `d` as LS-DYNA's second vector).
@@ -80,7 +92,8 @@ struct RigidMaterial {
 };
 
 using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
-                              PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial>;
+                              PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial,
+                              ElasticPlasticThermal>;
 
 // The law of each member (its kernel, moduli and name): material/law_registry.hpp.
 

@@ -40,6 +40,9 @@ struct SolidBlock {
   /// its contributions in colour order whatever the number of threads. Colour c is the range
   /// [colour_start[c], colour_start[c + 1]). Set by colour_element_blocks().
   std::vector<std::size_t> colour_start;
+  /// Thermal expansion: the tangent coefficient alpha against temperature (1/temperature);
+  /// the thermal strain increment of a step is alpha(T_mid) (T_{n+1} - T_n). Empty: none.
+  LoadCurve expansion;
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
 
@@ -65,6 +68,7 @@ struct ShellBlock {
   std::vector<Index> connectivity;        ///< 4 node indices per element
   std::vector<double> thickness;          ///< initial thickness at the 4 nodes of each element
   std::vector<std::size_t> colour_start;  ///< as SolidBlock::colour_start
+  LoadCurve expansion;                    ///< as SolidBlock::expansion
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
 

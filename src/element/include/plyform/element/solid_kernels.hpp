@@ -24,11 +24,17 @@ struct NodalView {
   /// kernels read the current state from it only (x, y, z, vx, vy, vz above may be stale): an
   /// element gathers each node from one cache line instead of six.
   const double* packed = nullptr;
+  /// Nodal temperatures at t_n (length node_count): read by the blocks whose state keeps
+  /// element temperatures (laws that need them, thermal expansion). May be null otherwise.
+  const double* temperature = nullptr;
 };
 
 /// Nodal internal force accumulators (length node_count), added to by the kernels.
 struct NodalForces {
   double *fx, *fy, *fz;
+  /// Optional: each element's plastic dissipation of the step (sigma_eq d eps_p over its
+  /// points, energy) added to its nodes in equal shares, for the heat of plastic work.
+  double* plastic_work = nullptr;
 };
 
 /// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx) and
@@ -45,6 +51,9 @@ struct SolidBlockState {
 
   /// The law's own history (material::history_per_point values per point, point-major).
   std::vector<double> history;
+  /// Per element, the mean temperature of its nodes at its last update, for laws that read
+  /// temperatures and for thermal expansion (the step's change); empty when neither applies.
+  std::vector<double> temperature;
   void resize(const core::SolidBlock& block, std::size_t history_per_point = 0);
 };
 

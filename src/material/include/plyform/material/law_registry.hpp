@@ -11,6 +11,7 @@
 
 #include "plyform/core/material.hpp"
 #include "plyform/material/laws/elastic.hpp"
+#include "plyform/material/laws/elastic_plastic_thermal.hpp"
 #include "plyform/material/laws/mooney_rivlin.hpp"
 #include "plyform/material/laws/orthotropic_elastic.hpp"
 #include "plyform/material/laws/piecewise_linear_plasticity.hpp"
@@ -24,7 +25,7 @@ struct LawList {};
 
 /// The registry.
 using Laws = LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
-                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw>;
+                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw>;
 
 namespace detail {
 template <class P, class List>
@@ -85,6 +86,8 @@ void for_each_law(F&& f) {
 [[nodiscard]] double shear_modulus(const core::Material& m);
 [[nodiscard]] bool law_for_solids(const core::Material& m);
 [[nodiscard]] bool law_for_shells(const core::Material& m);
+/// Whether the law reads the points' temperatures (law_needs_temperature).
+[[nodiscard]] bool law_reads_temperature(const core::Material& m);
 /// Values of the law's own history per integration point (law::history.size()).
 [[nodiscard]] std::size_t history_per_point(const core::Material& m);
 

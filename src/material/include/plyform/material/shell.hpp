@@ -45,6 +45,8 @@ struct ShellPoints {
   const double* cos_t = nullptr;
   const double* sin_t = nullptr;
   double* history = nullptr;  ///< the law's own history, its history.size() per point
+  /// Laws that read temperatures (needs_temperature): per point, at t_{n+1}; null otherwise.
+  const double* temperature = nullptr;
 };
 
 /// *MAT_ELASTIC, plane stress: d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise,

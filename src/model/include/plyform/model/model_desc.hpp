@@ -21,6 +21,7 @@
 #include "plyform/model/mat_orthotropic_elastic_desc.hpp"
 #include "plyform/model/mat_plasticity_desc.hpp"
 #include "plyform/model/mat_rigid_desc.hpp"
+#include "plyform/model/mat_thermal_plasticity_desc.hpp"
 #include "plyform/model/node_desc.hpp"
 #include "plyform/model/part_desc.hpp"
 #include "plyform/model/section_shell_desc.hpp"
@@ -55,6 +56,8 @@ struct ModelDesc {
   std::vector<MatRigidDesc> rigid_materials;
   std::vector<MatPiecewiseLinearPlasticityDesc> piecewise_linear_materials;
   std::vector<MatMooneyRivlinDesc> mooney_rivlin_materials;
+  std::vector<MatElasticPlasticThermalDesc> elastic_plastic_thermal_materials;
+  std::vector<MatAddThermalExpansionDesc> thermal_expansions;
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;
   std::vector<SetListDesc> part_sets;

@@ -8,6 +8,9 @@
 //   static constexpr bool needs_deformation_gradient;  solids: F from the reference configuration
 //                                                       (a total, hyperelastic law), else D and W
 //   static constexpr bool needs_material_axes;          shells: the angle of its axis a per point
+//   static constexpr bool needs_temperature;            optional (false when absent): the
+//                                                       points' temperatures (SolidPoints,
+//                                                       ShellPoints ::temperature)
 //   static constexpr std::array<std::string_view, N> history;  names of its per-point history
 //                                                       (beyond the stress and the effective
 //                                                       plastic strain, which every block keeps)
@@ -63,7 +66,17 @@ struct SolidPoints {
   SymView sigma{};            ///< Cauchy stress, in/out
   double* eps_p = nullptr;    ///< effective plastic strain, in/out
   double* history = nullptr;  ///< the law's history, history.size() per point, point-major
+  const double* temperature = nullptr;  ///< per point, at t_{n+1} (needs_temperature only)
 };
+
+/// Whether a law reads the points' temperatures (its optional needs_temperature).
+template <class Law>
+constexpr bool law_needs_temperature() {
+  if constexpr (requires { Law::needs_temperature; })
+    return Law::needs_temperature;
+  else
+    return false;
+}
 
 /// A shell law's material axis a: AOPT 0 along the element's edge from node 1 to node 2, AOPT 2
 /// the global vector `a`, both projected on the shell.
