@@ -2,10 +2,13 @@
 // at different temperatures in contact reach the capacity-weighted mean temperature with the
 // time constant C1 C2 / (h A (C1 + C2)); no heat crosses a gap beyond LMAX; a one-way contact
 // (ALGO 1) leaves the master's temperature unchanged and brings the slave to it with the time
-// constant C2 / (h A). The heat ledger closes in each.
+// constant C2 / (h A); with the outer faces held at two temperatures, the steady faces'
+// temperatures and the flux follow the series resistances t1 / k + 1 / h + t2 / k. The heat
+// ledger closes in each.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -117,6 +120,55 @@ TEST(ContactHeat, OneWayLeavesTheMasterUnchangedAndBringsTheSlaveToIt) {
   const thermal::HeatLedger& h = r.run.heat;
   EXPECT_GT(h.contact, 0.0);
   EXPECT_NEAR(h.stored, h.contact, 5e-3 * h.moved);
+}
+
+// Steady conduction through the gap conductance: the lower block's bottom face held at T_hot,
+// the upper block's top face at T_cold, steel-like blocks (k 50) with h0 = 5e4: the resistances
+// t1 / k, 1 / h0 and t2 / k in series (2e-5, 2e-5, 4e-5 m^2 K / W). Slow time 10 s (TSF 1000),
+// about 14 of the slowest time constants.
+TEST(ContactHeat, SteadyConductionThroughTheGapFollowsTheSeriesResistances) {
+  const double k = 50.0, h0 = 5e4;
+  test::ThermalControls c;
+  c.soln = 2;
+  c.end_time = 1e-2;
+  c.step = 1e-5;
+  c.tsf = 1000.0;
+  c.state_dt = 1e-3;
+  std::ostringstream extra;
+  extra << "*SET_NODE_LIST\n3\n1,2,3,4\n*SET_NODE_LIST\n4\n13,14,15,16\n";
+  extra << "*BOUNDARY_TEMPERATURE_SET\n3,0," << kHot << "\n4,0," << kCold << "\n";
+  extra << "*INITIAL_TEMPERATURE_SET\n0," << kCold << "\n*END\n";
+  const core::Model m =
+      build(test::thermal_header(c) +
+            test::stacked_blocks(kA, kT1, kT2, 0.0, k, h0, 1e-5, 1e-4, 0) + extra.str());
+  std::map<double, std::vector<double>> temperature;
+  test::RecordingSink sink;
+  sink.on_state = [&](const engine::Snapshot& s) {
+    temperature[std::round(s.time * 1e7) / 1e4] = s.nodes->temperature;
+  };
+  const engine::RunResult r = engine::run(m, sink, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  const double resistance = kT1 / k + 1.0 / h0 + kT2 / k;
+  const double q = (kHot - kCold) / resistance;
+  const double face_lower = kHot - q * kT1 / k, face_upper = face_lower - q / h0;
+  const std::vector<double>& temp = temperature.rbegin()->second;
+  const auto mean = [&](int first) {
+    double sum = 0.0;
+    for (int i = 0; i < 4; ++i)
+      sum += temp[static_cast<std::size_t>(first + i)];
+    return sum / 4.0;
+  };
+  const double lower = mean(4), upper = mean(8);  // nodes 5-8 and 9-12: the two faces
+  EXPECT_NEAR(lower, face_lower, 5e-3 * (kHot - kCold));
+  EXPECT_NEAR(upper, face_upper, 5e-3 * (kHot - kCold));
+  // The flux through each resistance: the lower block, the gap and the upper block.
+  EXPECT_NEAR(k * (kHot - lower) / kT1, q, 5e-3 * q);
+  EXPECT_NEAR(h0 * (lower - upper), q, 5e-3 * q);
+  EXPECT_NEAR(k * (upper - kCold) / kT2, q, 5e-3 * q);
+  std::printf(
+      "gap conductance: faces %.4f / %.4f K (closed form %.4f / %.4f), flux %.6g W/m^2 "
+      "across the gap (closed form %.6g)\n",
+      lower, upper, face_lower, face_upper, h0 * (lower - upper), q);
 }
 
 }  // namespace
