@@ -87,9 +87,14 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
         std::vector<std::string>{"time", "stored", "contact", "friction", "plastic", "convection",
                                  "radiation", "flux", "prescribed", "generation"},
         at(kHeat));
-    if (model.output.tprint_dt > 0.0 && !model.output.history_nodes.empty())
-      tprint_.emplace(outdir / kTprint, std::vector<std::string>{"time", "node", "temperature"},
-                      at(kTprint));
+    if (model.output.tprint_dt > 0.0 && !model.output.history_nodes.empty()) {
+      std::vector<std::string> columns{"time", "node", "temperature"};
+      if (model.thermal.thick_shells) {
+        columns.emplace_back("temperature_top");
+        columns.emplace_back("temperature_bottom");
+      }
+      tprint_.emplace(outdir / kTprint, columns, at(kTprint));
+    }
   }
   node_ids_.assign(model.node_id.begin(), model.node_id.end());
   for (const core::SolidBlock& b : model.solid_blocks) {
@@ -199,6 +204,7 @@ void ResultWriter::state(const engine::Snapshot& s) {
   }
   if (!model_.temperature0.empty() || model_.thermal.enabled)
     std::copy(ns.temperature.begin(), ns.temperature.end(), temperature_.begin());
+  const bool faces = !ns.temperature_top.empty();
   if (cohesive_model_ && s.contact != nullptr) {
     // Nodes that are no slave node of a cohesive interface: NaN (nothing defined there).
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -225,6 +231,10 @@ void ResultWriter::state(const engine::Snapshot& s) {
   piece.point_data = {{"displacement", 3, displacement_},
                       {"velocity", 3, velocity_},
                       {"temperature", 1, temperature_}};
+  if (faces) {  // thick thermal shells
+    piece.point_data.push_back({"temperature_top", 1, ns.temperature_top});
+    piece.point_data.push_back({"temperature_bottom", 1, ns.temperature_bottom});
+  }
   if (cohesive_model_ && s.contact != nullptr) {
     piece.point_data.push_back({"beta", 1, beta_});
     piece.point_data.push_back({"contact_pressure", 1, contact_pressure_});
@@ -324,8 +334,16 @@ void ResultWriter::temperatures(const engine::Snapshot& s) {
     return;
   for (core::Index i : model_.output.history_nodes) {
     const auto node = static_cast<std::size_t>(i);
-    tprint_->row_mixed(
-        {s.time, static_cast<std::int64_t>(model_.node_id[node]), s.nodes->temperature[node]});
+    if (model_.thermal.thick_shells) {
+      const bool faces = !s.nodes->temperature_top.empty();
+      const double t = s.nodes->temperature[node];
+      tprint_->row_mixed({s.time, static_cast<std::int64_t>(model_.node_id[node]), t,
+                          faces ? s.nodes->temperature_top[node] : t,
+                          faces ? s.nodes->temperature_bottom[node] : t});
+    } else {
+      tprint_->row_mixed(
+          {s.time, static_cast<std::int64_t>(model_.node_id[node]), s.nodes->temperature[node]});
+    }
   }
 }
 

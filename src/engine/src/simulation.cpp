@@ -288,6 +288,13 @@ void Simulation::State::set_up_run() {
     if (!thermal_only && model.thermal.fwork > 0.0)
       plastic_work.assign(n, 0.0);
   }
+  if (heat && heat->has_faces()) {
+    heat->face_temperatures(std::span<double>(s.temperature_bottom),
+                            std::span<double>(s.temperature_top));
+  } else {
+    s.temperature_bottom.clear();
+    s.temperature_top.clear();
+  }
   set_up_element_temperatures();
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
   res.physical_mass = mass.physical;
@@ -992,6 +999,10 @@ bool Simulation::State::heat_conduction(bool now) {
     return false;
   }
   temperatures_moved = true;
+  if (heat->has_faces()) {
+    heat->face_temperatures(std::span<double>(s.temperature_bottom),
+                            std::span<double>(s.temperature_top));
+  }
   if (!r.converged && !warned_thermal) {
     warned_thermal = true;
     res.warnings.push_back("the thermal conjugate gradients did not reach RELTOL in " +

@@ -597,7 +597,7 @@ void build_temperatures(const model::ModelDesc& desc, core::Model& model, Diagno
       c = it->second;
     }
     for (Index i : targets(b.target, b.target_id, b.where, "*BOUNDARY_TEMPERATURE"))
-      model.temperature_histories.push_back({i, c, b.cmult, b.birth, b.death});
+      model.temperature_histories.push_back({i, c, b.cmult, b.birth, b.death, b.loc});
   }
 }
 

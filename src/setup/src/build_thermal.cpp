@@ -62,6 +62,7 @@ void build_thermal(const model::ModelDesc& d, core::Model& m, Diagnostics& error
   c.enabled = true;
   c.thermal_only = soln == 1;
   const model::SourceLocation& solution_where = d.control_solution->where;
+  c.thick_shells = d.control_shell && d.control_shell->thshel == 1;
   if (d.thermal_solver) {
     const model::ControlThermalSolverDesc& s = *d.thermal_solver;
     c.steady = s.atype == 0;
@@ -191,6 +192,13 @@ void build_thermal(const model::ModelDesc& d, core::Model& m, Diagnostics& error
     hb.ambient_curve =
         flux ? -1 : curve_index(b.ambient_curve_id, b, radiation ? "TILCID" : "TLCID");
     hb.ambient_mult = b.ambient_mult;
+    hb.loc = b.loc;
+    if (b.loc != 0 && !c.thick_shells) {
+      warnings.push_back({b.where, kw, "LOC",
+                          "LOC " + std::to_string(b.loc) +
+                              " names a face of thick thermal shells, but *CONTROL_SHELL "
+                              "THSHEL is not 1: the boundary acts on the shells' one temperature"});
+    }
     const model::SetSegmentDesc* set = nullptr;
     for (const model::SetSegmentDesc& s : d.segment_sets)
       if (s.id == b.segment_set_id)

@@ -195,3 +195,47 @@ double face_area(const std::array<Vec3, 4>& x, bool triangle) {
 }
 
 }  // namespace plyform::thermal
+
+namespace plyform::thermal {
+
+Vec3 face_normal(const std::array<Vec3, 4>& x, bool triangle) {
+  return triangle ? unit(cross(sub(x[1], x[0]), sub(x[2], x[0])))
+                  : unit(cross(sub(x[2], x[0]), sub(x[3], x[1])));
+}
+
+// The quadratic profile through the thickness, L_b = z (z - 1) / 2, L_m = 1 - z^2,
+// L_t = z (z + 1) / 2 on z in [-1, 1]: its conductance per area is (k_n / (3 t)) times
+// [[7, -8, 1], [-8, 16, -8], [1, -8, 7]]. The in-plane conduction and the capacity lump the
+// profile with Simpson's weights t (1/6, 2/3, 1/6), so a profile uniform through the thickness
+// gives the thin shell's matrix; the through-thickness part lumps the area on the corners.
+double thick_shell_conductance(const std::array<Vec3, 4>& x, bool triangle, const Tensor3& k,
+                               double t, double (&K)[12][12]) {
+  for (auto& row : K)
+    for (double& v : row)
+      v = 0.0;
+  double plane[4][4];
+  const double area = shell_conductance(x, triangle, k, 1.0, plane);
+  if (!(area > 0.0) || !(t > 0.0))
+    return 0.0;
+  const int corners = triangle ? 3 : 4;
+  const double layer_share[3] = {2.0 * t / 3.0, t / 6.0, t / 6.0};  // middle, bottom, top
+  for (int layer = 0; layer < 3; ++layer)
+    for (int i = 0; i < corners; ++i)
+      for (int j = 0; j < corners; ++j)
+        K[4 * layer + i][4 * layer + j] = layer_share[layer] * plane[i][j];
+  const Vec3 n = face_normal(x, triangle);
+  double kn = 0.0;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      kn += n[i] * k[i][j] * n[j];
+  // In the order (middle, bottom, top).
+  constexpr double kz[3][3] = {{16.0, -8.0, -8.0}, {-8.0, 7.0, 1.0}, {-8.0, 1.0, 7.0}};
+  const double scale = kn / (3.0 * t) * area / corners;
+  for (int i = 0; i < corners; ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        K[4 * a + i][4 * b + i] += scale * kz[a][b];
+  return area;
+}
+
+}  // namespace plyform::thermal

@@ -29,9 +29,9 @@ bool is_triangle(const Index* c) {
   return c[3] == c[2];
 }
 
-// Calls f(thermal material, nodes, corners, volume) for every element of a part that conducts,
-// on the reference geometry: a hexahedron's 8 nodes and volume, a shell's 4 (a triangle's 3)
-// and its area times its initial thickness.
+// Calls f(thermal material, nodes, corners, volume, thick) for every element of a part that
+// conducts, on the reference geometry: a hexahedron's 8 nodes and volume, a shell's 4 (a
+// triangle's 3) and its area times its initial thickness; `thick`: a thick thermal shell.
 template <class F>
 void for_each_conducting_element(const core::Model& model, F&& f) {
   const auto node_xyz = [&](Index i) {
@@ -46,7 +46,7 @@ void for_each_conducting_element(const core::Model& model, F&& f) {
       std::array<Vec3, 8> x;
       for (std::size_t k = 0; k < 8; ++k)
         x[k] = node_xyz(c[k]);
-      f(mat, c, 8, hex8_volume(x));
+      f(mat, c, 8, hex8_volume(x), false);
     }
   }
   for (const core::ShellBlock& b : model.shell_blocks) {
@@ -63,7 +63,7 @@ void for_each_conducting_element(const core::Model& model, F&& f) {
       double t0 = 0.0;
       for (int k = 0; k < corners; ++k)
         t0 += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
-      f(mat, c, corners, face_area(x, tri) * t0);
+      f(mat, c, corners, face_area(x, tri) * t0, model.thermal.thick_shells);
     }
   }
 }
@@ -97,21 +97,44 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
   const std::size_t n = model.node_count();
   unknown_.assign(n, -1);
   // Capacity per node, and every node of a conducting element an unknown (in node order).
-  std::vector<double> capacity(n, 0.0);
-  for_each_conducting_element(model, [&](Index mat, const Index* c, int corners, double volume) {
-    const core::ThermalMaterial& tm = model.thermal_materials[idx(mat)];
-    for (int k = 0; k < corners; ++k) {
-      capacity[idx(c[k])] += tm.density * tm.heat_capacity * volume / corners;
-      unknown_[idx(c[k])] = 0;
-    }
-  });
+  // A thick thermal shell's corners also get a bottom and a top unknown (after all the
+  // nodes'), the capacity shared t (1/6, 2/3, 1/6) between bottom, middle and top.
+  std::vector<double> capacity(n, 0.0), face_capacity(n, 0.0);
+  std::vector<char> thick(n, 0);
+  for_each_conducting_element(
+      model, [&](Index mat, const Index* c, int corners, double volume, bool thick_shell) {
+        const core::ThermalMaterial& tm = model.thermal_materials[idx(mat)];
+        for (int k = 0; k < corners; ++k) {
+          const double share = tm.density * tm.heat_capacity * volume / corners;
+          capacity[idx(c[k])] += thick_shell ? share * 2.0 / 3.0 : share;
+          if (thick_shell) {
+            face_capacity[idx(c[k])] += share / 6.0;
+            thick[idx(c[k])] = 1;
+          }
+          unknown_[idx(c[k])] = 0;
+        }
+      });
   for (std::size_t i = 0; i < n; ++i) {
     if (unknown_[i] == 0) {
       unknown_[i] = static_cast<Index>(nodes_.size());
       nodes_.push_back(static_cast<Index>(i));
+      layer_.push_back(0);
       capacity_.push_back(capacity[i]);
     }
   }
+  for (int side : {-1, 1}) {
+    std::vector<Index>& face = side < 0 ? bottom_ : top_;
+    face.assign(std::find(thick.begin(), thick.end(), 1) != thick.end() ? n : 0, -1);
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      if (!thick[i])
+        continue;
+      face[i] = static_cast<Index>(nodes_.size());
+      nodes_.push_back(static_cast<Index>(i));
+      layer_.push_back(static_cast<signed char>(side));
+      capacity_.push_back(face_capacity[i]);
+    }
+  }
+  normal_.assign(bottom_.empty() ? 0 : 3 * n, 0.0);
   const std::size_t u = nodes_.size();
   Matrices& m = *m_;
   build_pattern();
@@ -120,29 +143,42 @@ HeatSolver::HeatSolver(const core::Model& model, std::span<double> temperature)
   m.t.resize(static_cast<Eigen::Index>(u));
   m.dt.setZero(static_cast<Eigen::Index>(u));
 
-  // Heat generation: each element's volume share, per material.
-  for_each_conducting_element(model, [&](Index mat, const Index* c, int corners, double volume) {
-    if (model.thermal_materials[idx(mat)].generation == 0.0)
-      return;
-    for (int k = 0; k < corners; ++k) {
-      generation_.push_back({unknown_[idx(c[k])], volume / corners});
-      generation_material_.push_back(mat);
-    }
-  });
+  // Heat generation: each element's volume share, per material (a thick shell's shared as
+  // its capacity).
+  for_each_conducting_element(
+      model, [&](Index mat, const Index* c, int corners, double volume, bool thick_shell) {
+        if (model.thermal_materials[idx(mat)].generation == 0.0)
+          return;
+        for (int k = 0; k < corners; ++k) {
+          for (int side = thick_shell ? -1 : 0; side <= (thick_shell ? 1 : 0); ++side) {
+            const double share = !thick_shell ? 1.0 : side == 0 ? 2.0 / 3.0 : 1.0 / 6.0;
+            generation_.push_back({unknown_at(c[k], side), share * volume / corners});
+            generation_material_.push_back(mat);
+          }
+        }
+      });
 
   // Prescribed temperatures of conducting nodes; those active at t = 0 hold from the start.
   for (std::size_t h = 0; h < model.temperature_histories.size(); ++h) {
     const core::TemperatureHistory& th = model.temperature_histories[h];
-    const Index un = unknown_[idx(th.node)];
+    const Index un = unknown_at(th.node, th.loc);
     if (un < 0)
       continue;
     prescribed_.push_back({un, h});
-    if (th.birth <= 0.0)
-      temperature[idx(th.node)] = curve_or_constant(model, th.curve, th.scale, 0.0);
   }
+  // Every unknown starts at its node's temperature (a thick shell uniform through its
+  // thickness), the prescribed ones active at t = 0 at theirs.
   temperature_.resize(u);
   for (std::size_t i = 0; i < u; ++i)
     temperature_[i] = temperature[idx(nodes_[i])];
+  for (const auto& [un, h] : prescribed_) {
+    const core::TemperatureHistory& th = model.temperature_histories[h];
+    if (th.birth <= 0.0)
+      temperature_[idx(un)] = curve_or_constant(model, th.curve, th.scale, 0.0);
+  }
+  for (std::size_t i = 0; i < u; ++i)
+    if (layer_[i] == 0)
+      temperature[idx(nodes_[i])] = temperature_[i];
   initial_ = temperature_;
   change_.assign(u, 0.0);
   next_ = model.thermal.dt_initial;
@@ -170,7 +206,20 @@ void HeatSolver::build_pattern() {
     }
   };
   add_pairs(model_.solid_blocks, 8);
-  add_pairs(model_.shell_blocks, 4);
+  if (!model_.thermal.thick_shells) {
+    add_pairs(model_.shell_blocks, 4);
+  } else {
+    for (const core::ShellBlock& b : model_.shell_blocks) {
+      if (!conducts(b.part))
+        continue;
+      for (std::size_t e = 0; e < b.size(); ++e) {
+        const std::array<Index, 12> un = thick_unknowns(&b.connectivity[4 * e]);
+        for (Index i : un)
+          for (Index j : un)
+            pairs.emplace_back(static_cast<int>(i), static_cast<int>(j), 0.0);
+      }
+    }
+  }
   for (const auto& rc : extra_) {
     pairs.emplace_back(rc[0], rc[1], 0.0);
     pairs.emplace_back(rc[1], rc[0], 0.0);
@@ -242,6 +291,7 @@ void HeatSolver::assemble(const Geometry& g) {
       continue;
     const core::ThermalMaterial& tm = model_.thermal_materials[idx(tmat)];
     const double* current = bi < g.shell_thickness.size() ? g.shell_thickness[bi] : nullptr;
+    const bool thick = model_.thermal.thick_shells;
     for (std::size_t colour = 0; colour + 1 < b.colour_start.size(); ++colour) {
       const long first = static_cast<long>(b.colour_start[colour]);
       const long last = static_cast<long>(b.colour_start[colour + 1]);
@@ -262,6 +312,20 @@ void HeatSolver::assemble(const Geometry& g) {
             t += b.thickness[4 * e + static_cast<std::size_t>(k)] / corners;
         }
         const Tensor3 k = conductivity_tensor(tm, x[0], x[1], x[3], 1.0);
+        if (thick) {
+          double ke[12][12];
+          thick_shell_conductance(x, tri, k, t, ke);
+          const std::array<Index, 12> un = thick_unknowns(c);
+          for (std::size_t j = 0; j < 12; ++j) {
+            if (j % 4 >= static_cast<std::size_t>(corners))
+              continue;
+            const int col = static_cast<int>(un[j]);
+            for (std::size_t i = 0; i < 12; ++i)
+              if (i % 4 < static_cast<std::size_t>(corners))
+                values[m.entry(m.K, static_cast<int>(un[i]), col)] += ke[i][j];
+          }
+          continue;
+        }
         double ke[4][4];
         shell_conductance(x, tri, k, t, ke);
         for (int j = 0; j < corners; ++j) {
@@ -292,19 +356,26 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
 
   // Contact links: each couples a slave node to its segment's nodes. A coupling of two
   // conducting nodes the pattern lacks rebuilds it (the contact found a new neighbour).
-  const auto unknown_of = [&](Index node) { return unknown_[idx(node)]; };
+  // Each link's unknowns: a thick shell's node couples through the face turned to the other
+  // side of the contact.
+  if (!normal_.empty())
+    update_normals(g);
+  link_unknowns_.resize(links.size());
+  for (std::size_t li = 0; li < links.size(); ++li)
+    link_unknowns_[li] = link_unknowns(links[li], g);
   bool new_coupling = false;
-  for (const core::ContactHeatLink& l : links) {
+  for (std::size_t li = 0; li < links.size(); ++li) {
+    const core::ContactHeatLink& l = links[li];
     if (l.heat->one_way)
       continue;
-    std::array<Index, 5> nodes{l.slave, l.master[0], l.master[1], l.master[2], l.master[3]};
+    const std::array<Index, 5>& un = link_unknowns_[li];
     std::array<double, 5> w{1.0, l.weight[0], l.weight[1], l.weight[2], l.weight[3]};
     for (std::size_t i = 0; i < 5; ++i) {
-      const Index ui = unknown_of(nodes[i]);
+      const Index ui = un[i];
       if (ui < 0 || w[i] == 0.0)
         continue;
       for (std::size_t j = i + 1; j < 5; ++j) {
-        const Index uj = unknown_of(nodes[j]);
+        const Index uj = un[j];
         if (uj >= 0 && w[j] != 0.0 &&
             m.entry(m.K, static_cast<int>(ui), static_cast<int>(uj)) < 0) {
           extra_.push_back({static_cast<int>(ui), static_cast<int>(uj)});
@@ -345,7 +416,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
       const int corners = tri ? 3 : 4;
       const double share = face_area(x, tri) / corners;
       for (int k = 0; k < corners; ++k) {
-        const Index un = unknown_[idx(fn[k])];
+        const Index un = unknown_at(fn[k], hb.loc);
         if (un < 0)
           continue;
         const std::size_t q = idx(un);
@@ -379,6 +450,11 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   for (std::size_t i = 0; i < u; ++i) {
     double mech = 0.0;
     const std::size_t node = idx(nodes_[i]);
+    if (layer_[i] != 0) {  // a thick shell's face: the mechanics' heat goes to the middle
+      m.b[static_cast<Eigen::Index>(i)] =
+          m.s_conv[i] + m.s_rad[i] + m.s_flux[i] + m.s_gen[i] - m.kt[static_cast<Eigen::Index>(i)];
+      continue;
+    }
     if (heat.contact != nullptr)
       mech += heat.contact[node], mech_contact += heat.contact[node];
     if (heat.friction != nullptr)
@@ -403,23 +479,26 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   // summing to 0); a node that does not conduct (a tool), and the master of a one-way link,
   // keeps its temperature: its part moves to the right-hand side.
   struct LinkTerm {
-    std::array<Index, 5> node;  // slave, masters
+    std::array<Index, 5> node;     // slave, masters
+    std::array<Index, 5> unknown;  // theirs (-1: a node that does not conduct)
     std::array<double, 5> a;
     double ha;
     bool one_way;
   };
-  const auto t_of = [&](Index node) {
-    const Index un = unknown_of(node);
+  // A link member's temperature: its unknown's, else (a tool) its node's.
+  const auto t_at = [&](Index un, Index node) {
     return un >= 0 ? temperature_[idx(un)] : temperature[idx(node)];
   };
   std::vector<LinkTerm> terms;
   terms.reserve(links.size());
-  for (const core::ContactHeatLink& l : links) {
+  for (std::size_t li = 0; li < links.size(); ++li) {
+    const core::ContactHeatLink& l = links[li];
+    const std::array<Index, 5>& lu = link_unknowns_[li];
     const core::ContactHeat& ch = *l.heat;
-    const double ts = t_of(l.slave);
+    const double ts = t_at(lu[0], l.slave);
     double tm = 0.0;
     for (std::size_t j = 0; j < 4; ++j)
-      tm += l.weight[j] * t_of(l.master[j]);
+      tm += l.weight[j] * t_at(lu[j + 1], l.master[j]);
     double hc = 0.0;
     if (l.gap <= ch.lmin) {
       hc = ch.h0_curve >= 0 ? model_.curves[idx(ch.h0_curve)](std::max(l.pressure, 0.0)) : ch.h0;
@@ -430,19 +509,20 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     if (!(ha > 0.0))
       continue;
     const LinkTerm lt{{l.slave, l.master[0], l.master[1], l.master[2], l.master[3]},
+                      lu,
                       {1.0, -l.weight[0], -l.weight[1], -l.weight[2], -l.weight[3]},
                       ha,
                       ch.one_way};
     for (std::size_t i = 0; i < 5; ++i) {
-      const Index ui = unknown_of(lt.node[i]);
+      const Index ui = lt.unknown[i];
       if (ui < 0 || lt.a[i] == 0.0 || (lt.one_way && i > 0))
         continue;
       double r = 0.0;
       for (std::size_t j = 0; j < 5; ++j) {
         if (lt.a[j] == 0.0)
           continue;
-        const Index uj = unknown_of(lt.node[j]);
-        r -= ha * lt.a[i] * lt.a[j] * t_of(lt.node[j]);
+        const Index uj = lt.unknown[j];
+        r -= ha * lt.a[i] * lt.a[j] * t_at(uj, lt.node[j]);
         if (uj >= 0 && !(lt.one_way && j > 0))
           a[m.entry(m.A, static_cast<int>(ui), static_cast<int>(uj))] +=
               theta * ha * lt.a[i] * lt.a[j];
@@ -554,13 +634,13 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     for (std::size_t j = 0; j < 5; ++j) {
       if (lt.a[j] == 0.0)
         continue;
-      const Index uj = unknown_of(lt.node[j]);
+      const Index uj = lt.unknown[j];
       const bool implicit = uj >= 0 && !(lt.one_way && j > 0);
-      tsum += lt.a[j] *
-              (t_of(lt.node[j]) + (implicit ? theta * m.dt[static_cast<Eigen::Index>(uj)] : 0.0));
+      tsum += lt.a[j] * (t_at(uj, lt.node[j]) +
+                         (implicit ? theta * m.dt[static_cast<Eigen::Index>(uj)] : 0.0));
     }
     for (std::size_t i = 0; i < 5; ++i) {
-      if (lt.a[i] == 0.0 || unknown_of(lt.node[i]) < 0 || (lt.one_way && i > 0))
+      if (lt.a[i] == 0.0 || lt.unknown[i] < 0 || (lt.one_way && i > 0))
         continue;
       contact_heat -= h * lt.ha * lt.a[i] * tsum;
     }
@@ -591,7 +671,8 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     change_[i] = d;
     if (held.empty() || !is_held[i])
       rep.max_change = std::max(rep.max_change, std::abs(d));
-    temperature[idx(nodes_[i])] = temperature_[i];
+    if (layer_[i] == 0)
+      temperature[idx(nodes_[i])] = temperature_[i];
     stored += capacity_[i] * (temperature_[i] - initial_[i]);
   }
   ledger_.stored = stored;
@@ -607,6 +688,94 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
       next_ = h;
   }
   return rep;
+}
+
+Index HeatSolver::unknown_at(Index node, int loc) const {
+  const std::vector<Index>& face = loc < 0 ? bottom_ : top_;
+  if (loc != 0 && !face.empty() && face[idx(node)] >= 0)
+    return face[idx(node)];
+  return unknown_[idx(node)];
+}
+
+std::array<Index, 12> HeatSolver::thick_unknowns(const Index* c) const {
+  std::array<Index, 12> un{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    un[i] = unknown_[idx(c[i])];
+    un[4 + i] = bottom_[idx(c[i])];
+    un[8 + i] = top_[idx(c[i])];
+  }
+  return un;
+}
+
+// The area-weighted normals of the thick thermal shells' nodes on the current geometry.
+void HeatSolver::update_normals(const Geometry& g) {
+  std::fill(normal_.begin(), normal_.end(), 0.0);
+  for (const core::ShellBlock& b : model_.shell_blocks) {
+    if (model_.parts[idx(b.part)].thermal_material < 0)
+      continue;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      const Index* c = &b.connectivity[4 * e];
+      const bool tri = is_triangle(c);
+      std::array<Vec3, 4> x;
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double* p = g.xyz + g.stride * idx(c[k]);
+        x[k] = Vec3{p[0], p[1], p[2]};
+      }
+      const Vec3 n = face_normal(x, tri);
+      const double area = face_area(x, tri);
+      for (std::size_t k = 0; k < (tri ? 3u : 4u); ++k)
+        for (std::size_t d = 0; d < 3; ++d)
+          normal_[3 * idx(c[k]) + d] += area * n[d];
+    }
+  }
+}
+
+// A link's unknowns (slave, then the segment's nodes): a node of a thick thermal shell
+// couples through its face on the side of the other surface (the slave's toward the point it
+// projects to, a master node's toward the slave); other nodes through their one temperature.
+std::array<Index, 5> HeatSolver::link_unknowns(const core::ContactHeatLink& l,
+                                               const Geometry& g) const {
+  const auto at = [&](Index i) {
+    const double* p = g.xyz + g.stride * idx(i);
+    return Vec3{p[0], p[1], p[2]};
+  };
+  std::array<Index, 5> un{unknown_[idx(l.slave)], unknown_[idx(l.master[0])],
+                          unknown_[idx(l.master[1])], unknown_[idx(l.master[2])],
+                          unknown_[idx(l.master[3])]};
+  if (normal_.empty())
+    return un;
+  const Vec3 xs = at(l.slave);
+  Vec3 p{0.0, 0.0, 0.0};
+  for (std::size_t j = 0; j < 4; ++j) {
+    const Vec3 xj = at(l.master[j]);
+    for (std::size_t d = 0; d < 3; ++d)
+      p[d] += l.weight[j] * xj[d];
+  }
+  const auto face_toward = [&](Index node, const Vec3& from, const Vec3& to) {
+    if (bottom_[idx(node)] < 0)
+      return unknown_[idx(node)];
+    double s = 0.0;
+    for (std::size_t d = 0; d < 3; ++d)
+      s += normal_[3 * idx(node) + d] * (to[d] - from[d]);
+    return s >= 0.0 ? top_[idx(node)] : bottom_[idx(node)];
+  };
+  un[0] = face_toward(l.slave, xs, p);
+  for (std::size_t j = 0; j < 4; ++j)
+    un[j + 1] = face_toward(l.master[j], p, xs);
+  return un;
+}
+
+void HeatSolver::face_temperatures(std::span<double> bottom, std::span<double> top) const {
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const std::size_t node = idx(nodes_[i]);
+    if (layer_[i] == 0) {
+      bottom[node] = top[node] = temperature_[i];  // until a face says otherwise
+    }
+  }
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    if (layer_[i] != 0)
+      (layer_[i] < 0 ? bottom : top)[idx(nodes_[i])] = temperature_[i];
+  }
 }
 
 void HeatSolver::visit_state(core::StateArchive& a) {

@@ -398,8 +398,8 @@ TEST(BoundaryTemperature, NodesAndSetsWithDefaults) {
 }
 
 TEST(BoundaryTemperature, Errors) {
-  expect_error("*BOUNDARY_TEMPERATURE_SET\n6,11,1.0,1\n", 2, "*BOUNDARY_TEMPERATURE_SET", "LOC",
-               "thermal shells");
+  expect_error("*BOUNDARY_TEMPERATURE_SET\n6,11,1.0,3\n", 2, "*BOUNDARY_TEMPERATURE_SET", "LOC",
+               "-1, 0, 1");
   expect_error("*BOUNDARY_TEMPERATURE_SET\n,0,1.0\n", 2, "*BOUNDARY_TEMPERATURE_SET", "NSID",
                "required");
   expect_error("*BOUNDARY_TEMPERATURE_NODE\n1,-2\n", 2, "*BOUNDARY_TEMPERATURE_NODE", "LCID",

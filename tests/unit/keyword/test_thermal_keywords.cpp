@@ -373,8 +373,7 @@ TEST(BoundaryConvectionSet, Rejections) {
   expect_error("*BOUNDARY_CONVECTION_SET\n1\n-3,10,0,300\n", 3, kKw, "HLCID",
                "HLCID = -3 (h against temperature, curve 3) is not supported yet");
   expect_error("*BOUNDARY_CONVECTION_SET\n1\n0,10,-1,300\n", 3, kKw, "TLCID", ">= 0");
-  expect_error("*BOUNDARY_CONVECTION_SET\n1\n0,10,0,300,1\n", 3, kKw, "LOC",
-               "thick thermal shells");
+  expect_error("*BOUNDARY_CONVECTION_SET\n1\n0,10,0,300,2\n", 3, kKw, "LOC", "-1, 0, 1");
   expect_error("*BOUNDARY_CONVECTION_SET\n1\n0,10,0,300\n2\n", 4, kKw, "",
                "missing card 2 (HLCID HMULT TLCID TMULT LOC)");
   expect_error("*BOUNDARY_CONVECTION_SET\n", 1, kKw, "", "missing card 1");
@@ -408,7 +407,7 @@ TEST(BoundaryFluxSet, Rejections) {
   expect_error("*BOUNDARY_FLUX_SET\n1\n-2,1,1,1,1\n", 3, kKw, "LCID",
                "LCID = -2 (the flux against temperature, curve 2) is not supported yet");
   expect_error("*BOUNDARY_FLUX_SET\n1\n0,1,1,1,1,0,2\n", 3, kKw, "NHISV", "user flux subroutine");
-  expect_error("*BOUNDARY_FLUX_SET\n1\n0,1,1,1,1,-1\n", 3, kKw, "LOC", "thick thermal shells");
+  expect_error("*BOUNDARY_FLUX_SET\n1\n0,1,1,1,1,-2\n", 3, kKw, "LOC", "-1, 0, 1");
   expect_error("*BOUNDARY_FLUX_SET\n1\n0,1,1,1,1,0,0,9\n", 3, kKw, "UNUSED", "field 8");
   expect_error("*BOUNDARY_FLUX_SET\n1,3\n0\n", 2, kKw, "PSEROD", "erode");
 }
@@ -450,8 +449,7 @@ TEST(BoundaryRadiationSet, Rejections) {
   expect_error("*BOUNDARY_RADIATION_SET\n1\n-4,1e-8,0,300\n", 3, kKw, "RFLCID",
                "RFLCID = -4 (f against temperature, curve 4) is not supported yet");
   expect_error("*BOUNDARY_RADIATION_SET\n1\n0,1e-8,-2,300\n", 3, kKw, "TILCID", ">= 0");
-  expect_error("*BOUNDARY_RADIATION_SET\n1\n0,1e-8,0,300,1\n", 3, kKw, "LOC",
-               "thick thermal shells");
+  expect_error("*BOUNDARY_RADIATION_SET\n1\n0,1e-8,0,300,2\n", 3, kKw, "LOC", "-1, 0, 1");
 }
 
 // --- *DATABASE_TPRINT

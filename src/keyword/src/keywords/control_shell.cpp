@@ -94,12 +94,12 @@ constexpr std::array kCard2{
               .unit = "-",
               .description = "ELFORM 6 coordinate system (read)",
               .allowed = kCstyp6},
-    FieldSpec{.name = "TSHELL",
+    FieldSpec{.name = "THSHEL",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "thermal shell option (0 only)",
-              .allowed = kZeroOnly,
-              .allowed_note = "thermal shells are not supported yet"},
+              .description = "thermal shells: 0 one temperature through the thickness, 1 a "
+                             "temperature gradient through it (bottom, middle, top)",
+              .allowed = kZeroOne},
 };
 constexpr std::array kCards{
     CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
@@ -124,6 +124,7 @@ void read_control_shell(KeywordInput& in) {
   if (const auto line2 = in.next_line()) {
     const CardValues c2 = in.read(kCards[1], *line2);
     desc.intgrd = c2.integer("INTGRD");
+    desc.thshel = c2.integer("THSHEL");
   }
   if (in.model().control_shell) {
     in.warn(in.keyword().line, "",

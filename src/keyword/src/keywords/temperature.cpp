@@ -11,6 +11,18 @@ namespace plyform::keyword {
 namespace {
 
 constexpr std::array kLocs{0};
+constexpr std::array kFaceLocs{-1, 0, 1};
+
+// A prescribed temperature may hold one face of a thick thermal shell.
+constexpr FieldSpec face_loc_field() {
+  return FieldSpec{.name = "LOC",
+                   .type = FieldType::kInteger,
+                   .unit = "-",
+                   .description =
+                       "face of thick thermal shells (*CONTROL_SHELL THSHEL 1): -1 "
+                       "bottom, 0 middle, 1 top",
+                   .allowed = kFaceLocs};
+}
 
 constexpr FieldSpec loc_field() {
   return FieldSpec{.name = "LOC",
@@ -72,7 +84,7 @@ constexpr std::array<FieldSpec, 6> boundary_fields(const char (&target)[N],
                     .unit = "-",
                     .description = "multiplier of the curve (blank: 1), or the temperature "
                                    "when LCID = 0"},
-          loc_field(),
+          face_loc_field(),
           FieldSpec{.name = "TDEATH",
                     .default_value = 1e20,
                     .min_value = 0.0,

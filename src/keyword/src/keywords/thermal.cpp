@@ -616,14 +616,14 @@ constexpr FieldSpec kPserodField{.name = "PSEROD",
                                  .allowed_note =
                                      "updating the boundary as solids erode is not "
                                      "supported (plyform has no erosion)"};
+constexpr std::array kFaceLocs{-1, 0, 1};
 constexpr FieldSpec kLocField{.name = "LOC",
                               .type = FieldType::kInteger,
                               .unit = "-",
-                              .description = "face of thick thermal shells: must be 0",
-                              .allowed = kZeroOnly,
-                              .allowed_note =
-                                  "the faces of thick thermal shells (LOC -1, 1) "
-                                  "are not supported yet"};
+                              .description =
+                                  "face of thick thermal shells (*CONTROL_SHELL "
+                                  "THSHEL 1): -1 bottom, 0 middle, 1 top",
+                              .allowed = kFaceLocs};
 constexpr FieldSpec curve_field(std::string_view name, std::string_view description) {
   return FieldSpec{
       .name = name, .type = FieldType::kInteger, .unit = "-", .description = description};

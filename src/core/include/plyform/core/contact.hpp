@@ -116,6 +116,7 @@ struct TemperatureHistory {
   double scale = 1.0;
   double birth = 0.0;
   double death = 1e20;
+  int loc = 0;  ///< LOC: on a thick thermal shell node the bottom (-1), middle (0) or top (1)
 };
 
 }  // namespace plyform::core

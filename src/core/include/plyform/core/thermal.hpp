@@ -38,6 +38,7 @@ struct HeatBoundary {
   std::array<double, 4> node_mult{1.0, 1.0, 1.0, 1.0};  ///< flux MLC1..MLC4
   Index ambient_curve = -1;                             ///< T_inf against time (-1: constant)
   double ambient_mult = 1.0;                            ///< TMULT, TIMULT
+  int loc = 0;  ///< LOC: on thick thermal shells the bottom (-1), middle (0) or top (1) face
 };
 
 /// *CONTROL_SOLUTION, *CONTROL_THERMAL_SOLVER and *CONTROL_THERMAL_TIMESTEP.
@@ -62,6 +63,9 @@ struct ThermalControls {
   int reassemble_every = 1;    ///< NCYCL
   double fwork = 1.0;          ///< FWORK
   double eqheat = 1.0;         ///< EQHEAT
+  /// *CONTROL_SHELL THSHEL 1: conducting shells carry a temperature profile through their
+  /// thickness (thick thermal shells: bottom, middle and top temperatures per node).
+  bool thick_shells = false;
 };
 
 }  // namespace plyform::core

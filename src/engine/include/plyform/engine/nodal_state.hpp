@@ -21,6 +21,9 @@ struct NodalState {
   std::vector<double> mx, my, mz;     ///< internal moments at t_n
   std::vector<double> inertia;        ///< lumped rotary inertia (isotropic)
   std::vector<double> temperature;    ///< nodal temperature at t_n (the contact law reads it)
+  /// Thick thermal shells (THSHEL 1): their bottom and top faces' temperatures at the last
+  /// thermal step (a node without faces: its temperature); empty without thick shells.
+  std::vector<double> temperature_bottom, temperature_top;
 
   /// f(name, array) for every field that changes during a run (the checkpoint's records);
   /// mass and inertia are set up once from the elements. A new nodal field: a member above and
@@ -34,6 +37,7 @@ struct NodalState {
     f("wx", wx), f("wy", wy), f("wz", wz), f("wnx", wnx), f("wny", wny), f("wnz", wnz);
     f("mx", mx), f("my", my), f("mz", mz);
     f("temperature", temperature);
+    f("temperature_bottom", temperature_bottom), f("temperature_top", temperature_top);
   }
 
   /// Every array to n zeros.

@@ -53,6 +53,7 @@ struct ControlShellDesc {
   int istupd = 0;  ///< ISTUPD: thickness update (plyform always updates; 0 is warned about)
   int theory = 2;  ///< THEORY: default shell formulation (2, Belytschko-Tsay)
   int intgrd = 0;  ///< INTGRD: through-thickness rule, 0 Gauss, 1 Lobatto
+  int thshel = 0;  ///< THSHEL: 1 = thick thermal shells (a temperature profile through them)
   SourceLocation where;
 };
 

@@ -22,7 +22,7 @@ struct BoundaryTemperatureDesc {
   int target_id = 0;     ///< NID or NSID
   int curve_id = 0;      ///< LCID: temperature against time (0: constant CMULT)
   double cmult = 1.0;    ///< CMULT: curve multiplier
-  int loc = 0;           ///< LOC: must be 0
+  int loc = 0;           ///< LOC: thick thermal shells' face: -1 bottom, 0 middle, 1 top
   double death = 1e20;   ///< TDEATH (a written 0 is 1e20)
   double birth = 0.0;    ///< TBIRTH
   SourceLocation where;  ///< the card line

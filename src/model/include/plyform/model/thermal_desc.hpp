@@ -94,7 +94,7 @@ struct HeatBoundaryDesc {
   std::array<double, 4> node_mult{1.0, 1.0, 1.0, 1.0};  ///< MLC1..MLC4 (flux)
   int ambient_curve_id = 0;                             ///< TLCID or TILCID
   double ambient_mult = 1.0;                            ///< TMULT or TIMULT
-  int loc = 0;           ///< LOC: must be 0 (thick shell faces come later)
+  int loc = 0;           ///< LOC: thick thermal shells' face: -1 bottom, 0 middle, 1 top
   int nhisv = 0;         ///< NHISV (flux): must be 0
   SourceLocation where;  ///< the line of card 2 (or 1)
 };

@@ -31,6 +31,19 @@ double hex8_conductance(const std::array<Vec3, 8>& x, const Tensor3& k, bool one
 double shell_conductance(const std::array<Vec3, 4>& x, bool triangle, const Tensor3& k, double t,
                          double (&K)[4][4]);
 
+/// Conductance (12 x 12) of a thick thermal shell of thickness t with a quadratic temperature
+/// profile through it: unknowns in the order (middle of nodes 1-4, bottom of nodes 1-4, top of
+/// nodes 1-4), bottom and top along -/+ the face normal (face_normal). In-plane conduction as
+/// the thin shell's, shared by the three levels with Simpson's weights t (1/6, 2/3, 1/6);
+/// through the thickness the quadratic element with k_n = n . k n, lumped on the corners. A
+/// triangle's fourth rows and columns are 0. Returns the area.
+double thick_shell_conductance(const std::array<Vec3, 4>& x, bool triangle, const Tensor3& k,
+                               double t, double (&K)[12][12]);
+
+/// The unit normal of a face (x2 - x0) x (x3 - x1), a triangle's (x1 - x0) x (x2 - x0): the
+/// shell's top side.
+[[nodiscard]] Vec3 face_normal(const std::array<Vec3, 4>& x, bool triangle);
+
 /// The volume of a hexahedron (2x2x2 Gauss points).
 [[nodiscard]] double hex8_volume(const std::array<Vec3, 8>& x);
 

@@ -82,8 +82,14 @@ class HeatSolver {
   [[nodiscard]] long steps() const { return steps_; }
   [[nodiscard]] long iterations() const { return iterations_; }
   [[nodiscard]] std::size_t unknowns() const { return nodes_.size(); }
-  /// The node of each unknown (local node indices).
+  /// The node of each unknown (local node indices); thick thermal shells' faces after the
+  /// nodes' own unknowns.
   [[nodiscard]] const std::vector<core::Index>& nodes() const { return nodes_; }
+  /// Whether the model has thick thermal shells (faces with their own temperatures).
+  [[nodiscard]] bool has_faces() const { return !bottom_.empty(); }
+  /// The bottom and top face temperatures of every conducting node (every node's entry is
+  /// written where it conducts: a node without faces gets its one temperature in both).
+  void face_temperatures(std::span<double> bottom, std::span<double> top) const;
 
   /// The state a checkpoint holds: temperatures at time(), the step, the books.
   void visit_state(core::StateArchive& a);
@@ -93,13 +99,25 @@ class HeatSolver {
   // The conductance (unscaled by TSF) on the current geometry.
   void assemble(const Geometry& g);
   void build_pattern();
+  // The unknown of a node's face (loc -1 bottom, 1 top) or middle (0); the node's own when it
+  // has no faces.
+  [[nodiscard]] core::Index unknown_at(core::Index node, int loc) const;
+  // A thick shell's 12 unknowns: middles, bottoms, tops of its 4 nodes.
+  [[nodiscard]] std::array<core::Index, 12> thick_unknowns(const core::Index* c) const;
+  void update_normals(const Geometry& g);
+  [[nodiscard]] std::array<core::Index, 5> link_unknowns(const core::ContactHeatLink& l,
+                                                         const Geometry& g) const;
   const core::Model& model_;
-  std::vector<core::Index> nodes_;    // unknown -> node
-  std::vector<core::Index> unknown_;  // node -> unknown (-1: none)
-  std::vector<double> capacity_;      // per unknown
-  std::vector<double> temperature_;   // per unknown, at time_
-  std::vector<double> initial_;       // per unknown, at t = 0 (the books' reference)
-  std::vector<double> change_;        // the last step's T_{n+1} - T_n (the CG's first guess)
+  std::vector<core::Index> nodes_;         // unknown -> node
+  std::vector<core::Index> unknown_;       // node -> unknown (-1: none)
+  std::vector<signed char> layer_;         // per unknown: -1 bottom, 0 middle, 1 top face
+  std::vector<core::Index> bottom_, top_;  // node -> face unknown (-1: none; empty: none at all)
+  std::vector<double> normal_;             // 3 per node: thick shells' area-weighted normals
+  std::vector<std::array<core::Index, 5>> link_unknowns_;  // scratch of one step
+  std::vector<double> capacity_;                           // per unknown
+  std::vector<double> temperature_;                        // per unknown, at time_
+  std::vector<double> initial_;  // per unknown, at t = 0 (the books' reference)
+  std::vector<double> change_;   // the last step's T_{n+1} - T_n (the CG's first guess)
   std::vector<std::pair<core::Index, std::size_t>> prescribed_;  // unknown, history
   std::vector<std::pair<core::Index, double>> generation_;       // unknown, volume x material
   std::vector<core::Index> generation_material_;                 // per entry of generation_

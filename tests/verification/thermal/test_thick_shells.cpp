@@ -1,0 +1,132 @@
+// Thick thermal shells (*CONTROL_SHELL THSHEL 1) against the closed forms of a slab: a 1 mm
+// composite plate quenched by convection on its top face (LOC 1) at a Biot number of 2,
+// insulated below, follows the series solution of transient conduction through its thickness
+// (bottom, middle and top temperatures); a thin metal skin (Biot 0.005) with the same option
+// stays uniform through its thickness and cools as a lumped body. The heat ledger closes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "plyform/keyword/read_deck.hpp"
+#include "plyform/setup/build.hpp"
+#include "plyform/setup/validate.hpp"
+#include "recording_sink.hpp"
+#include "temp_dir.hpp"
+#include "thermal_decks.hpp"
+
+namespace plyform {
+namespace {
+
+core::Model build(const std::string& text) {
+  test::TempDir dir;
+  const auto read = keyword::read_deck(dir.write("thick_shells.k", text));
+  EXPECT_TRUE(read.ok()) << (read.errors.empty() ? "" : read.errors.front().to_string());
+  const auto problems = setup::validate(read.model);
+  EXPECT_TRUE(problems.empty()) << problems.front().to_string();
+  auto built = setup::build(read.model);
+  EXPECT_TRUE(built.errors.empty()) << built.errors.front().to_string();
+  return *built.model;
+}
+
+struct Slab {
+  double rho, c, k, thickness, h;
+  [[nodiscard]] double diffusivity() const { return k / (rho * c); }
+  [[nodiscard]] double biot() const { return h * thickness / k; }
+};
+
+// The deck: one square shell (side 10 mm) of the slab's material, thermal only, THSHEL 1,
+// convection to 0 on its top face from 100, insulated elsewhere; states every `state_dt`.
+std::string slab_deck(const Slab& s, double end_time, double step, double state_dt) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "*KEYWORD\n*CONTROL_TERMINATION\n" << end_time << "\n*CONTROL_SOLUTION\n1\n";
+  os << "*CONTROL_THERMAL_SOLVER\n1,0,11\n*CONTROL_THERMAL_TIMESTEP\n0,0.5," << step << "\n";
+  os << "*CONTROL_SHELL\n20,0,0,1,2\n1.0,0,0,1,1\n";
+  os << "*DATABASE_BINARY_D3PLOT\n" << state_dt << "\n*DATABASE_GLSTAT\n" << state_dt << "\n";
+  os << "*MAT_ELASTIC\n1," << s.rho << ",1.0e10,0.3\n";
+  os << "*MAT_THERMAL_ISOTROPIC\n1,0.0\n" << s.c << "," << s.k << "\n";
+  os << test::shell_strip(1, 0.01, 0.01, s.thickness);
+  os << "*SET_SEGMENT\n7\n1,3,4,2\n";
+  os << "*BOUNDARY_CONVECTION_SET\n7\n0," << s.h << ",0,0.0,1\n";
+  os << "*INITIAL_TEMPERATURE_SET\n0,100.0\n*END\n";
+  return os.str();
+}
+
+// theta / theta_0 at depth fraction xi from the insulated face (0) to the cooled one (1), at
+// Fourier number fo: sum C_n cos(l_n xi) exp(-l_n^2 fo), l_n tan l_n = Bi,
+// C_n = 4 sin l_n / (2 l_n + sin 2 l_n).
+double slab_solution(double bi, double xi, double fo) {
+  double sum = 0.0;
+  for (int n = 0; n < 60; ++n) {
+    // l_n in (n pi, n pi + pi/2): bisection on l tan l - Bi.
+    double lo = n * std::numbers::pi + 1e-12,
+           hi = n * std::numbers::pi + std::numbers::pi / 2 - 1e-12;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (mid * std::tan(mid) - bi > 0.0 ? hi : lo) = mid;
+    }
+    const double l = 0.5 * (lo + hi);
+    const double cn = 4.0 * std::sin(l) / (2.0 * l + std::sin(2.0 * l));
+    sum += cn * std::cos(l * xi) * std::exp(-l * l * fo);
+  }
+  return sum;
+}
+
+struct Faces {
+  std::map<double, std::array<double, 3>> temperature;  // bottom, middle, top (node 1)
+  test::RecordingSink sink;
+  explicit Faces(double time_unit) {
+    sink.on_state = [this, time_unit](const engine::Snapshot& s) {
+      ASSERT_FALSE(s.nodes->temperature_top.empty());
+      temperature[std::round(s.time / time_unit * 1e6) / 1e6] = {
+          s.nodes->temperature_bottom[0], s.nodes->temperature[0], s.nodes->temperature_top[0]};
+    };
+  }
+};
+
+TEST(ThickThermalShell, AQuenchedCompositeFollowsTheSlabSolution) {
+  const Slab s{1500.0, 1500.0, 0.5, 0.001, 1000.0};                  // Bi = 2
+  const double t_ref = s.thickness * s.thickness / s.diffusivity();  // Fo = t / t_ref
+  Faces faces(t_ref);
+  const core::Model m = build(slab_deck(s, t_ref, t_ref / 1000.0, 0.05 * t_ref));
+  const engine::RunResult r = engine::run(m, faces.sink, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  double worst = 0.0;
+  for (double fo : {0.1, 0.2, 0.5, 1.0}) {
+    ASSERT_TRUE(faces.temperature.count(fo)) << "no state at Fo = " << fo;
+    const std::array<double, 3>& t = faces.temperature.at(fo);
+    for (int level = 0; level < 3; ++level) {
+      const double expected = 100.0 * slab_solution(s.biot(), 0.5 * level, fo);
+      worst = std::max(worst, std::abs(t[static_cast<std::size_t>(level)] - expected));
+      EXPECT_NEAR(t[static_cast<std::size_t>(level)], expected, 2.0)
+          << "Fo " << fo << ", level " << level;  // 2 % of the initial difference
+    }
+  }
+  std::printf("thick shell quench, Bi 2: worst error %.3f %% of the initial difference\n", worst);
+  EXPECT_NEAR(r.heat.stored, r.heat.entered(), 1e-6 * r.heat.moved);
+}
+
+TEST(ThickThermalShell, AThinMetalSkinStaysUniformAndCoolsAsALumpedBody) {
+  const Slab s{7800.0, 500.0, 50.0, 0.00025, 1000.0};  // Bi = 0.005
+  const double tau = s.rho * s.c * s.thickness / s.h;
+  Faces faces(tau);
+  const core::Model m = build(slab_deck(s, tau, tau / 500.0, 0.25 * tau));
+  const engine::RunResult r = engine::run(m, faces.sink, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  for (const auto& [t, temp] : faces.temperature) {
+    if (t == 0.0)
+      continue;
+    // A lumped body cools as exp(-t / tau); the profile is within Bi/2 of uniform.
+    const double expected = 100.0 * std::exp(-t);
+    EXPECT_NEAR(temp[1], expected, 0.005 * 100.0) << "t / tau " << t;
+    EXPECT_LT(temp[0] - temp[2], 0.005 * temp[1]) << "t / tau " << t;
+    EXPECT_GT(temp[0] - temp[2], 0.0) << "the cooled top is the colder face";
+  }
+}
+
+}  // namespace
+}  // namespace plyform
