@@ -126,7 +126,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
   double pdzz[kPoints], pcos[kPoints], psin[kPoints];
   // Temperature (thermal blocks) and the plastic strain before the law (plastic work heat).
-  double ptemp[kPoints], peps0[kPoints], eth_k[kChunk];
+  double ptemp[kPoints], peps0[kPoints], peth[kPoints];
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
   const bool expands = thermal && !block.expansion.x.empty();
   const bool plastic_heat = out.plastic_work != nullptr;
@@ -344,27 +344,39 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         pdzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
       }
       work_old[k_el] = point_work(st, unip * e, k_el * unip);
-      eth_k[k_el] = 0.0;
       if (thermal) {
-        // The element's temperature: the mean of its nodes' (a triangle's three). Thermal
-        // expansion takes alpha(T_mid) dT off the in-plane increments the law sees (the
-        // stress work above and below counts the total strain: the forces do that work).
+        // The temperature of each thickness point: the element's mean of its nodes' (a
+        // triangle's three), through the thickness the quadratic profile of a thick thermal
+        // shell's bottom, middle and top (uniform for a thin one). Thermal expansion takes
+        // alpha(T_mid) dT off the in-plane increments the law sees (the stress work above and
+        // below counts the total strain: the forces do that work).
         const core::Index* cn = &block.connectivity[4 * e];
-        const double* tn = nv.temperature;
-        const auto n0 = static_cast<std::size_t>(cn[0]), n1 = static_cast<std::size_t>(cn[1]),
-                   n2 = static_cast<std::size_t>(cn[2]), n3 = static_cast<std::size_t>(cn[3]);
-        const double t_new = n2 == n3 ? (tn[n0] + tn[n1] + tn[n2]) / 3.0
-                                      : 0.25 * (tn[n0] + tn[n1] + tn[n2] + tn[n3]);
-        if (dt > 0.0) {
-          const double t_old = st.temperature[e];
-          if (expands)
-            eth_k[k_el] = block.expansion(0.5 * (t_old + t_new)) * (t_new - t_old);
-          st.temperature[e] = t_new;
-        }
+        const bool tri = cn[2] == cn[3];
+        const auto mean = [&](const double* tn) {
+          const auto n0 = static_cast<std::size_t>(cn[0]), n1 = static_cast<std::size_t>(cn[1]),
+                     n2 = static_cast<std::size_t>(cn[2]), n3 = static_cast<std::size_t>(cn[3]);
+          return tri ? (tn[n0] + tn[n1] + tn[n2]) / 3.0
+                     : 0.25 * (tn[n0] + tn[n1] + tn[n2] + tn[n3]);
+        };
+        const double t_mid = mean(nv.temperature);
+        const bool faces = nv.temperature_bottom != nullptr;
+        const double t_bottom = faces ? mean(nv.temperature_bottom) : t_mid;
+        const double t_top = faces ? mean(nv.temperature_top) : t_mid;
         for (int k = 0; k < nip; ++k) {
           const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
-          pdxx[at] -= eth_k[k_el];
-          pdyy[at] -= eth_k[k_el];
+          const std::size_t q = unip * e + static_cast<std::size_t>(k);
+          const double z = zeta[k];
+          const double t_new =
+              0.5 * z * (z - 1.0) * t_bottom + (1.0 - z * z) * t_mid + 0.5 * z * (z + 1.0) * t_top;
+          peth[at] = 0.0;
+          if (dt > 0.0) {
+            const double t_old = st.temperature[q];
+            if (expands)
+              peth[at] = block.expansion(0.5 * (t_old + t_new)) * (t_new - t_old);
+            st.temperature[q] = t_new;
+          }
+          pdxx[at] -= peth[at];
+          pdyy[at] -= peth[at];
           ptemp[at] = t_new;
         }
       }
@@ -409,7 +421,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       if (expands) {
         // Back to the total increments (stress work), and the free thermal thickness strain.
         for (std::size_t at = 0; at < unip * chunk; ++at) {
-          const double eth = eth_k[at / unip];
+          const double eth = peth[at];
           pdxx[at] += eth;
           pdyy[at] += eth;
           pdzz[at] += eth;

@@ -291,9 +291,11 @@ void Simulation::State::set_up_run() {
   if (heat && heat->has_faces()) {
     heat->face_temperatures(std::span<double>(s.temperature_bottom),
                             std::span<double>(s.temperature_top));
+    s.temperature_interface = s.temperature;
   } else {
     s.temperature_bottom.clear();
     s.temperature_top.clear();
+    s.temperature_interface.clear();
   }
   set_up_element_temperatures();
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
@@ -463,14 +465,20 @@ void Simulation::State::set_up_element_temperatures() {
     const core::ShellBlock& blk = model.shell_blocks[b];
     if (!reads(blk))
       continue;
-    shells[b].temperature.resize(blk.size());
+    const auto nip = static_cast<std::size_t>(blk.nip);
+    shells[b].temperature.resize(nip * blk.size());
     for (std::size_t e = 0; e < blk.size(); ++e) {
       const core::Index* cn = &blk.connectivity[4 * e];
-      shells[b].temperature[e] = mean(cn, cn[2] == cn[3] ? 3 : 4);
+      // Uniform through the thickness at the start (the initial temperatures are nodal).
+      std::fill_n(&shells[b].temperature[nip * e], nip, mean(cn, cn[2] == cn[3] ? 3 : 4));
     }
     add_range(blk);
   }
   view.temperature = s.temperature.data();
+  if (!s.temperature_top.empty()) {
+    view.temperature_bottom = s.temperature_bottom.data();
+    view.temperature_top = s.temperature_top.data();
+  }
 }
 
 // LS-DYNA stops a *MAT_ELASTIC_PLASTIC_THERMAL run whose temperatures leave the material's
@@ -1002,6 +1010,8 @@ bool Simulation::State::heat_conduction(bool now) {
   if (heat->has_faces()) {
     heat->face_temperatures(std::span<double>(s.temperature_bottom),
                             std::span<double>(s.temperature_top));
+    s.temperature_interface = s.temperature;
+    heat->interface_temperatures(std::span<double>(s.temperature_interface));
   }
   if (!r.converged && !warned_thermal) {
     warned_thermal = true;
@@ -1014,8 +1024,10 @@ bool Simulation::State::heat_conduction(bool now) {
 
 void Simulation::State::contact_forces() {
   if (contact) {
-    contact->apply(t, dt, packed.data(), s.temperature.data(), s.fx.data(), s.fy.data(),
-                   s.fz.data());
+    // The contact law reads the temperature of the face it acts on (thick thermal shells).
+    const double* temperature =
+        s.temperature_interface.empty() ? s.temperature.data() : s.temperature_interface.data();
+    contact->apply(t, dt, packed.data(), temperature, s.fx.data(), s.fy.data(), s.fz.data());
   }
 }
 

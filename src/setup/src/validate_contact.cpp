@@ -123,14 +123,15 @@ void check_contact_side(const model::ContactDesc& c, bool slave, const Tables& t
   }
 }
 
-/// A node with two *BOUNDARY_TEMPERATURE entries (directly or through sets): an error on the
-/// later entry, naming the first node and the earlier entry.
+/// A node with two *BOUNDARY_TEMPERATURE entries (directly or through sets) on the same face
+/// (LOC: a thick thermal shell's bottom, middle and top are held apart): an error on the later
+/// entry, naming the first node and the earlier entry.
 void check_single_prescription(const model::ModelDesc& model, std::vector<Diagnostic>& errors) {
   std::unordered_map<int, const model::SetListDesc*> node_sets;
   for (const model::SetListDesc& s : model.node_sets) {
     node_sets.emplace(s.id, &s);
   }
-  std::unordered_map<int, const model::BoundaryTemperatureDesc*> owner;
+  std::unordered_map<long long, const model::BoundaryTemperatureDesc*> owner;  // node, LOC
   for (const model::BoundaryTemperatureDesc& b : model.temperature_histories) {
     std::vector<int> nodes;
     if (b.target == NodeTarget::kNode) {
@@ -142,7 +143,7 @@ void check_single_prescription(const model::ModelDesc& model, std::vector<Diagno
     int first_node = 0;
     const model::BoundaryTemperatureDesc* first_owner = nullptr;
     for (int n : nodes) {
-      const auto [it, inserted] = owner.emplace(n, &b);
+      const auto [it, inserted] = owner.emplace(3LL * n + (b.loc + 1), &b);
       if (inserted || it->second == &b) {
         continue;
       }
@@ -157,7 +158,7 @@ void check_single_prescription(const model::ModelDesc& model, std::vector<Diagno
            cat("node ", first_node, " already has a prescribed temperature (",
                boundary_keyword(first_owner->target), " at ", at(first_owner->where), ")",
                conflicts > 1 ? cat(" and so have ", conflicts - 1, " more nodes of the set") : "",
-               "; a node takes one *BOUNDARY_TEMPERATURE entry")});
+               "; a node takes one *BOUNDARY_TEMPERATURE entry per face (LOC)")});
     }
   }
 }

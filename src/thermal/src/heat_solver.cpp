@@ -778,6 +778,14 @@ void HeatSolver::face_temperatures(std::span<double> bottom, std::span<double> t
   }
 }
 
+void HeatSolver::interface_temperatures(std::span<double> temperature) const {
+  for (std::size_t li = 0; li < link_unknowns_.size(); ++li) {
+    const Index un = link_unknowns_[li][0];
+    if (un >= 0)
+      temperature[idx(nodes_[idx(un)])] = temperature_[idx(un)];
+  }
+}
+
 void HeatSolver::visit_state(core::StateArchive& a) {
   a.fixed("temperature", std::span<double>(temperature_));
   a.fixed("change", std::span<double>(change_));

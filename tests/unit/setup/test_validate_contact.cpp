@@ -156,7 +156,7 @@ TEST(ValidateContact, ANodeTakesOneBoundaryTemperature) {
   EXPECT_EQ(errors[0].to_string(),
             "deck.k:42: *BOUNDARY_TEMPERATURE_NODE: field NID: node 6 already has a prescribed "
             "temperature (*BOUNDARY_TEMPERATURE_SET at deck.k:39); a node takes one "
-            "*BOUNDARY_TEMPERATURE entry");
+            "*BOUNDARY_TEMPERATURE entry per face (LOC)");
   EXPECT_EQ(errors[1].where.line, 43);
   EXPECT_NE(errors[1].message.find("node 1 already has a prescribed temperature "
                                    "(*BOUNDARY_TEMPERATURE_NODE at deck.k:41)"),

@@ -2,7 +2,9 @@
 // composite plate quenched by convection on its top face (LOC 1) at a Biot number of 2,
 // insulated below, follows the series solution of transient conduction through its thickness
 // (bottom, middle and top temperatures); a thin metal skin (Biot 0.005) with the same option
-// stays uniform through its thickness and cools as a lumped body. The heat ledger closes.
+// stays uniform through its thickness and cools as a lumped body. The heat ledger closes. A
+// strip whose faces are held 100 apart bends by the thermal curvature alpha dT / t: each
+// thickness point of the mechanics reads the profile.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -126,6 +128,56 @@ TEST(ThickThermalShell, AThinMetalSkinStaysUniformAndCoolsAsALumpedBody) {
     EXPECT_LT(temp[0] - temp[2], 0.005 * temp[1]) << "t / tau " << t;
     EXPECT_GT(temp[0] - temp[2], 0.0) << "the cooled top is the colder face";
   }
+}
+
+// A cantilever strip (50 x 5 x 1 mm, 10 shells, clamped at x = 0 with its rotation about x
+// free) with alpha = 1e-5: its top faces brought to 100 and its bottom ones held at 0 over
+// 40 ms (a smooth ramp, 13 periods of its first mode), the steady linear profile through the
+// thickness makes the free curvature alpha (T_top - T_bottom) / t: the tip deflects by
+// -kappa L^2 / 2.
+TEST(ThickThermalShell, AGradientThroughTheThicknessBendsAStripByTheThermalCurvature) {
+  const double length = 0.05, width = 0.005, t = 0.001, alpha = 1e-5, dtemp = 100.0;
+  const double end_time = 0.05;
+  std::ostringstream os;
+  os.precision(12);
+  os << "*KEYWORD\n*CONTROL_TERMINATION\n" << end_time << "\n*CONTROL_SOLUTION\n2\n";
+  os << "*CONTROL_THERMAL_SOLVER\n1,0,11\n*CONTROL_THERMAL_TIMESTEP\n0,1.0,1.0e-4\n";
+  os << "*CONTROL_SHELL\n20,0,0,1,2\n1.0,0,0,1,1\n";
+  os << "*DATABASE_BINARY_D3PLOT\n0.01\n*DATABASE_GLSTAT\n0.01\n";
+  os << "*MAT_ELASTIC\n1,7800,2.0e11,0.3\n*MAT_THERMAL_ISOTROPIC\n1,0.0\n500,5000\n";
+  os << "*MAT_ADD_THERMAL_EXPANSION\n1,0," << alpha << "\n";
+  os << test::shell_strip(10, length, width, t);
+  os << "*SET_NODE_LIST\n3\n";
+  for (int i = 1; i <= 22; ++i)
+    os << i << (i % 8 == 0 || i == 22 ? "\n" : ",");
+  // 0.5 (1 - cos(pi t / 0.04)), then held.
+  os << "*DEFINE_CURVE\n8\n";
+  for (int k = 0; k <= 16; ++k) {
+    const double tk = 0.04 * k / 16.0;
+    os << tk << "," << 0.5 * (1.0 - std::cos(std::numbers::pi * k / 16.0)) << "\n";
+  }
+  os << "1.0,1.0\n";
+  os << "*BOUNDARY_TEMPERATURE_SET\n3,8," << dtemp << ",1\n3,0,0.0,-1\n";
+  os << "*BOUNDARY_SPC_SET\n1,0,1,1,1,0,1,1\n*END\n";
+  const core::Model m = build(os.str());
+  test::RecordingSink sink;
+  double tip = 0.0, top = 0.0, bottom = 0.0, middle = 0.0;
+  sink.on_state = [&](const engine::Snapshot& s) {
+    tip = 0.5 * (s.nodes->uz[20] + s.nodes->uz[21]);
+    top = s.nodes->temperature_top[10];
+    bottom = s.nodes->temperature_bottom[10];
+    middle = s.nodes->temperature[10];
+  };
+  const engine::RunResult r = engine::run(m, sink, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_NEAR(top, dtemp, 1e-9 * dtemp);
+  EXPECT_NEAR(bottom, 0.0, 1e-9 * dtemp);
+  EXPECT_NEAR(middle, 0.5 * dtemp, 1e-6 * dtemp);  // the steady profile is linear
+  const double kappa = alpha * dtemp / t;
+  const double expected = -0.5 * kappa * length * length;
+  EXPECT_NEAR(tip, expected, 0.02 * std::abs(expected));
+  std::printf("thermal bending: tip %.6g m, closed form %.6g m (%.2f %%)\n", tip, expected,
+              100.0 * (tip - expected) / std::abs(expected));
 }
 
 }  // namespace

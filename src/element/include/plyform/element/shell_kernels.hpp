@@ -39,7 +39,8 @@ struct ShellBlockState {
 
   /// The law's own history (material::history_per_point values per point, point-major).
   std::vector<double> history;
-  /// As SolidBlockState::temperature (a thin shell: one temperature through its thickness).
+  /// As SolidBlockState::temperature, per thickness point (nip per element): a thin thermal
+  /// shell's one temperature, a thick one's profile through its thickness.
   std::vector<double> temperature;
   void resize(const core::ShellBlock& block, std::size_t history_per_point = 0);
 };

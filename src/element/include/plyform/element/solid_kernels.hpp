@@ -27,6 +27,9 @@ struct NodalView {
   /// Nodal temperatures at t_n (length node_count): read by the blocks whose state keeps
   /// element temperatures (laws that need them, thermal expansion). May be null otherwise.
   const double* temperature = nullptr;
+  /// Thick thermal shells: the bottom and top faces' temperatures (null: none).
+  const double* temperature_bottom = nullptr;
+  const double* temperature_top = nullptr;
 };
 
 /// Nodal internal force accumulators (length node_count), added to by the kernels.

@@ -24,6 +24,9 @@ struct NodalState {
   /// Thick thermal shells (THSHEL 1): their bottom and top faces' temperatures at the last
   /// thermal step (a node without faces: its temperature); empty without thick shells.
   std::vector<double> temperature_bottom, temperature_top;
+  /// Thick thermal shells: the temperature the contact law reads at each node, a _THERMAL
+  /// contact's slave node's face toward its segment (else the node's temperature).
+  std::vector<double> temperature_interface;
 
   /// f(name, array) for every field that changes during a run (the checkpoint's records);
   /// mass and inertia are set up once from the elements. A new nodal field: a member above and
@@ -38,6 +41,7 @@ struct NodalState {
     f("mx", mx), f("my", my), f("mz", mz);
     f("temperature", temperature);
     f("temperature_bottom", temperature_bottom), f("temperature_top", temperature_top);
+    f("temperature_interface", temperature_interface);
   }
 
   /// Every array to n zeros.

@@ -90,6 +90,9 @@ class HeatSolver {
   /// The bottom and top face temperatures of every conducting node (every node's entry is
   /// written where it conducts: a node without faces gets its one temperature in both).
   void face_temperatures(std::span<double> bottom, std::span<double> top) const;
+  /// For the slave node of each contact link of the last step, the temperature of the face it
+  /// coupled through (the face turned to its segment); other entries are left as they are.
+  void interface_temperatures(std::span<double> temperature) const;
 
   /// The state a checkpoint holds: temperatures at time(), the step, the books.
   void visit_state(core::StateArchive& a);
