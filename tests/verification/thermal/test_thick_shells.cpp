@@ -180,5 +180,51 @@ TEST(ThickThermalShell, AGradientThroughTheThicknessBendsAStripByTheThermalCurva
               100.0 * (tip - expected) / std::abs(expected));
 }
 
+// Two thick thermal shells stacked face to face (1 mm steel, mid-surfaces 1 mm apart: the
+// faces touch) in a _THERMAL contact with h0 = 5e4, the lower bottom face held at 400 and
+// the upper top face at 300: the steady faces across the contact follow the series
+// resistances t / k + 1 / h0 + t / k, which only holds when the contact couples the faces that
+// touch (not the middles); the contact law reads the slave's touching face.
+TEST(ThickThermalShell, HeatCrossesAContactBetweenTheFacesThatTouch) {
+  const double t = 0.001, k = 50.0, h0 = 5e4, a = 0.01;
+  std::ostringstream os;
+  os.precision(12);
+  os << "*KEYWORD\n*CONTROL_TERMINATION\n1e-2\n*CONTROL_SOLUTION\n2\n";
+  os << "*CONTROL_THERMAL_SOLVER\n1,0,11\n0,0,0,0,0,,,1000\n";
+  os << "*CONTROL_THERMAL_TIMESTEP\n0,0.5,1.0e-5\n*CONTROL_SHELL\n20,0,0,1,2\n1.0,0,0,1,1\n";
+  os << "*DATABASE_BINARY_D3PLOT\n1e-3\n*DATABASE_GLSTAT\n1e-3\n";
+  os << "*MAT_ELASTIC\n1,7800,2.0e11,0.3\n*MAT_THERMAL_ISOTROPIC\n1,0.0\n500," << k << "\n";
+  os << "*PART\nlower\n1,1,1,0,0,0,0,1\n*PART\nupper\n2,1,1,0,0,0,0,1\n";
+  os << "*SECTION_SHELL\n1,2,0.8333,2\n" << t << "," << t << "," << t << "," << t << "\n";
+  os << "*NODE\n";
+  int id = 1;
+  for (double z : {0.0, t})
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {a, 0.0}, {a, a}, {0.0, a}})
+      os << id++ << "," << x << "," << y << "," << z << "\n";
+  os << "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,2,5,6,7,8\n";
+  os << "*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n0,0\n0,0\n0,0," << h0
+     << ",1e-5,1e-4,0.5,0,0\n";
+  os << "*SET_NODE_LIST\n1\n1,2,3,4\n*SET_NODE_LIST\n2\n5,6,7,8\n";
+  os << "*BOUNDARY_TEMPERATURE_SET\n1,0,400.0,-1\n2,0,300.0,1\n";
+  os << "*INITIAL_TEMPERATURE_SET\n0,300.0\n*END\n";
+  const core::Model m = build(os.str());
+  test::RecordingSink sink;
+  double lower_top = 0.0, upper_bottom = 0.0, interface = 0.0;
+  sink.on_state = [&](const engine::Snapshot& s) {
+    lower_top = s.nodes->temperature_top[0];
+    upper_bottom = s.nodes->temperature_bottom[4];
+    interface = s.nodes->temperature_interface[4];
+  };
+  const engine::RunResult r = engine::run(m, sink, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  const double q = 100.0 / (t / k + 1.0 / h0 + t / k);
+  EXPECT_NEAR(lower_top, 400.0 - q * t / k, 0.5);  // 0.5 % of the difference
+  EXPECT_NEAR(upper_bottom, 300.0 + q * t / k, 0.5);
+  EXPECT_NEAR(h0 * (lower_top - upper_bottom), q, 5e-3 * q);
+  EXPECT_DOUBLE_EQ(interface, upper_bottom);
+  std::printf("thick shells in contact: faces %.4f / %.4f (closed form %.4f / %.4f)\n", lower_top,
+              upper_bottom, 400.0 - q * t / k, 300.0 + q * t / k);
+}
+
 }  // namespace
 }  // namespace plyform
