@@ -14,7 +14,8 @@ and writes next to them:
                   energy books (stored, damage, viscous, friction, damping; healing)
   heat.csv     -> heat.png      the heat ledger: heat stored against the heat that entered by
                                 each path, and their difference (the balance)
-  tprint.csv   -> tprint.png    temperatures of the history nodes against time
+  tprint.csv   -> tprint.png    temperatures of the history nodes against time (thick
+                                 thermal shells: their top and bottom faces dashed, dotted)
 glstat.csv is required; the others are plotted when present. Exit status 0 on success, 1 when
 OUTDIR or glstat.csv is missing or a file cannot be read, 2 on a usage error.
 """
@@ -284,9 +285,19 @@ def plot_tprint(outdir, title):
     if not groups:
         fail(f"{path} has no rows")
     fig, ax = plt.subplots(figsize=(8.0, 4.5), layout="constrained")
+    faces = "temperature_top" in cols  # thick thermal shells: the faces too
+    if faces:
+        for n in ["temperature_top", "temperature_bottom"]:
+            d[n] = floats(cols[n], path, n)
     for key in list(groups)[:MAX_CURVES]:
         idx = np.array(groups[key])
-        ax.plot(d["time"][idx], d["temperature"][idx], lw=1.3, label=f"node {key[0]}")
+        line = ax.plot(d["time"][idx], d["temperature"][idx], lw=1.3, label=f"node {key[0]}")[0]
+        if faces:
+            for n, dash in [("temperature_top", "--"), ("temperature_bottom", ":")]:
+                ax.plot(d["time"][idx], d[n][idx], dash, lw=1.0, color=line.get_color())
+    if faces:
+        ax.plot([], [], "k--", lw=1.0, label="top face")
+        ax.plot([], [], "k:", lw=1.0, label="bottom face")
     style(ax, xlabel="time", ylabel="temperature")
     ax.legend(fontsize=8, frameon=False, loc="best")
     fig.suptitle(title + "  temperatures of the history nodes", fontsize=10)
