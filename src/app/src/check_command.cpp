@@ -215,6 +215,11 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                                 : "implicit",
                t.solver == 12 ? "diagonally scaled conjugate-gradient" : "direct LDL^T",
                t.tsf_curve >= 0 ? std::string("from a curve") : fmt::format("{:g}", t.tsf));
+    if (t.thick_shells) {
+      fmt::print(out,
+                 "  thick thermal shells (THSHEL 1): bottom, middle and top temperatures "
+                 "through every conducting shell\n");
+    }
     if (!t.thermal_only && t.fwork > 0.0) {
       fmt::print(out,
                  "  plastic work heats the parts: FWORK {:g} of the plastic dissipation, times "
