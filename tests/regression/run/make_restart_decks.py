@@ -11,7 +11,8 @@ restart_solid.k  decks/block_threads.k (576 elastic hex8, one face clamped, the 
                  a lateral initial velocity); a checkpoint every 50 cycles.
 restart_thermal.k the same block with computed temperatures (SOLN 2, a thermal step every few
                  mechanical steps, TSF 1e5): the clamped face held at 500 K, the rest starting
-                 at 300 K; a checkpoint every 50 cycles.
+                 at 300 K, of *MAT_ELASTIC_PLASTIC_THERMAL (yielding, expanding, heated by its
+                 plastic work); a checkpoint every 50 cycles.
 Standard library only.
 """
 
@@ -59,7 +60,15 @@ def main(argv):
         "*CONTROL_SOLUTION\n2\n*CONTROL_THERMAL_SOLVER\n1,0,12\n0,0,0,1e-9,0,,,1e5\n"
         "*CONTROL_THERMAL_TIMESTEP\n0,0.5,2e-7\n*MAT_THERMAL_ISOTROPIC\n1,0.0\n5e8,50.0\n"
         "*INITIAL_TEMPERATURE_SET\n0,300.0\n*BOUNDARY_TEMPERATURE_SET\n1,0,500.0\n*END", 1)
-    if thermal.count("*CONTROL_SOLUTION") != 1 or "0         0         1\n" not in thermal:
+    # The thermal elasto-plastic law with expansion (yielding: plastic-work heat), so the
+    # element temperatures and the plastic work since the last thermal step are restarted too.
+    elastic = "*MAT_ELASTIC\n$      MID        RO         E        PR\n         1   7.85e-9  210000.0       0.3\n"
+    thermal = thermal.replace(
+        elastic,
+        "*MAT_ELASTIC_PLASTIC_THERMAL\n1,7.85e-9\n0,2000\n210000.0,150000.0\n0.3,0.3\n"
+        "1.2e-5,1.6e-5\n20.0,5.0\n1000.0,500.0\n", 1)
+    if thermal.count("*CONTROL_SOLUTION") != 1 or "0         0         1\n" not in thermal or \
+            "*MAT_ELASTIC_PLASTIC_THERMAL" not in thermal:
         sys.exit("make_restart_decks.py: decks/block_threads.k changed: its PART card or *END")
     with open(os.path.join(out, "restart_thermal.k"), "w") as f:
         f.write(thermal)
