@@ -112,6 +112,8 @@ struct DeckRun {
   /// Cohesive results of the slave nodes at each nodout time: (time, results).
   std::vector<std::pair<double, std::vector<contact::SlaveNodeResult>>> cohesive;
   std::vector<std::pair<double, std::vector<double>>> uz;  ///< nodout: uz of history nodes
+  /// nodout: every node's temperature.
+  std::vector<std::pair<double, std::vector<double>>> temperature;
 };
 
 /// Reads, validates, builds and runs `text`; fails the test (and returns an empty run) on any
@@ -134,6 +136,7 @@ inline void run_deck(const std::string& text, DeckRun& out, int threads = 1) {
     for (core::Index i : m.output.history_nodes)
       uz.push_back(s.nodes->uz[static_cast<std::size_t>(i)]);
     out.uz.emplace_back(s.time, uz);
+    out.temperature.emplace_back(s.time, s.nodes->temperature);
   };
   engine::SolverOptions options;
   options.threads = threads;
