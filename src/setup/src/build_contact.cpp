@@ -435,6 +435,7 @@ struct ContactBuilder {
         h.lmax = c.lmax;
         h.ftosa = c.ftosa;
         h.one_way = c.algo == 1;
+        h.boundaries_off_in_contact = c.bc_flg == 1;
         h.friction_heat = d.control_contact && d.control_contact->frceng == 1;
         if (c.h0 < 0.0) {
           const int id = static_cast<int>(-c.h0);

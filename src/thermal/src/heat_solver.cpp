@@ -404,6 +404,18 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     const double* p = g.xyz + g.stride * idx(i);
     return Vec3{p[0], p[1], p[2]};
   };
+  // BC_FLG 1: the nodes in contact take no boundary heat.
+  covered_.clear();
+  for (const core::ContactHeatLink& l : links) {
+    if (!l.heat->boundaries_off_in_contact || l.gap > l.heat->lmin)
+      continue;
+    if (covered_.empty())
+      covered_.assign(model_.node_count(), 0);
+    covered_[idx(l.slave)] = 1;
+    for (std::size_t j = 0; j < 4; ++j)
+      if (l.weight[j] != 0.0)
+        covered_[idx(l.master[j])] = 1;
+  }
   for (const core::HeatBoundary& hb : model_.heat_boundaries) {
     const double f = curve_or_constant(model_, hb.curve, hb.mult, t_theta) * scale;
     const double ambient = curve_or_constant(model_, hb.ambient_curve, hb.ambient_mult, t_theta);
@@ -417,7 +429,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
       const double share = face_area(x, tri) / corners;
       for (int k = 0; k < corners; ++k) {
         const Index un = unknown_at(fn[k], hb.loc);
-        if (un < 0)
+        if (un < 0 || (!covered_.empty() && covered_[idx(fn[k])]))
           continue;
         const std::size_t q = idx(un);
         const double tn = temperature_[q];

@@ -519,8 +519,8 @@ TEST(ContactThermal, Rejections) {
   constexpr std::string_view kKw = "*CONTACT_SURFACE_TO_SURFACE_THERMAL";
   expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0.5,0.1\n", 5, kKw, "LMAX",
                "below LMIN");
-  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0,0.1,0.5,1\n", 5, kKw,
-               "BC_FLG", "not supported yet");
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0,0.1,0.5,2\n", 5, kKw,
+               "BC_FLG", "one of 0, 1");
   expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n0,0,1,0,0.1,0.5,0,2\n", 5, kKw,
                "ALGO", "0 or 1");
   expect_error("*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n\n\n-3\n", 5, kKw, "K", ">= 0");

@@ -122,6 +122,38 @@ TEST(ContactHeat, OneWayLeavesTheMasterUnchangedAndBringsTheSlaveToIt) {
   EXPECT_NEAR(h.stored, h.contact, 5e-3 * h.moved);
 }
 
+// BC_FLG 1: the convection on the two faces that touch is off while they touch (the ledger
+// books none, the two blocks keep their heat), on with BC_FLG 0, and on with BC_FLG 1 once
+// the faces are apart.
+TEST(ContactHeat, BcFlgTurnsTheBoundariesOffWhereTheSidesTouch) {
+  const auto run = [](double gap, int bc_flg) {
+    test::ThermalControls c;
+    c.soln = 2;
+    c.end_time = 1e-4;
+    c.step = 1e-6;
+    c.tsf = 1000.0;
+    c.state_dt = 1e-4;
+    std::ostringstream extra;
+    extra << "*SET_SEGMENT\n7\n5,6,7,8\n9,10,11,12\n*BOUNDARY_CONVECTION_SET\n7\n0,100.0,0,0.0\n";
+    extra << "*INITIAL_TEMPERATURE_SET\n1," << kHot << "\n2," << kCold << "\n*END\n";
+    const core::Model m = build(
+        test::thermal_header(c) +
+        test::stacked_blocks(kA, kT1, kT2, gap, 5000.0, kH0, 1e-5, 1e-4, 0, bc_flg) + extra.str());
+    test::RecordingSink sink;
+    return engine::run(m, sink, {});
+  };
+  const engine::RunResult off = run(0.0, 1), on = run(0.0, 0), apart = run(2e-4, 1);
+  ASSERT_TRUE(off.ok && on.ok && apart.ok) << off.error << on.error << apart.error;
+  // The scale: the heat the blocks exchange, C1 (T_hot - T_cold).
+  const double scale = test::kRho * test::kHeatCapacity * kA * kA * kT1 * (kHot - kCold);
+  EXPECT_EQ(off.heat.convection, 0.0);
+  EXPECT_NEAR(off.heat.stored, 0.0, 1e-9 * scale);  // round-off of sum C (T - T0)
+  EXPECT_LT(on.heat.convection, -1e-3 * scale);
+  EXPECT_LT(apart.heat.convection, -1e-3 * scale);
+  for (const engine::RunResult* r : {&off, &on, &apart})
+    EXPECT_NEAR(r->heat.stored, r->heat.entered(), 1e-6 * std::max(r->heat.moved, scale));
+}
+
 // Steady conduction through the gap conductance: the lower block's bottom face held at T_hot,
 // the upper block's top face at T_cold, steel-like blocks (k 50) with h0 = 5e4: the resistances
 // t1 / k, 1 / h0 and t2 / k in series (2e-5, 2e-5, 4e-5 m^2 K / W). Slow time 10 s (TSF 1000),

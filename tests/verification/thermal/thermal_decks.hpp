@@ -94,7 +94,7 @@ namespace plyform::test {
 /// 2: both steel-like with conductivity k), in a _THERMAL contact of part 2 (slave) on part 1
 /// with the closed-gap conductance h0, LMIN, LMAX and ALGO given.
 inline std::string stacked_blocks(double a, double t1, double t2, double gap, double k, double h0,
-                                  double lmin, double lmax, int algo) {
+                                  double lmin, double lmax, int algo, int bc_flg = 0) {
   std::ostringstream os;
   os.precision(12);
   os << "*MAT_THERMAL_ISOTROPIC\n2,0.0\n" << kHeatCapacity << "," << k << "\n";
@@ -108,7 +108,7 @@ inline std::string stacked_blocks(double a, double t1, double t2, double gap, do
   os << "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n2,2,9,10,11,12,13,14,15,16\n";
   os << "*CONTACT_SURFACE_TO_SURFACE_THERMAL\n2,1,3,3\n0,0\n0,0\n";
   os << "0,"
-     << "0," << h0 << "," << lmin << "," << lmax << ",0.5,0," << algo << "\n";
+     << "0," << h0 << "," << lmin << "," << lmax << ",0.5," << bc_flg << "," << algo << "\n";
   os << "*SET_NODE_LIST\n1\n1,2,3,4,5,6,7,8\n*SET_NODE_LIST\n2\n9,10,11,12,13,14,15,16\n";
   return os.str();
 }

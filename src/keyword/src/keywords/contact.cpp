@@ -302,9 +302,9 @@ constexpr std::array kThermalCard{
     FieldSpec{.name = "BC_FLG",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "thermal boundary conditions of the faces in contact: must be 0",
-              .allowed = kZeroOrOne,
-              .allowed_note = "BC_FLG 1 is not supported yet"},
+              .description = "thermal boundary conditions (convection, radiation, flux) of the "
+                             "nodes in contact: 0 on, 1 off",
+              .allowed = kZeroOrOne},
     FieldSpec{.name = "ALGO",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -427,7 +427,6 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     c.ftosa = zero_means(th.real("FTOSA"), 0.5);
     c.bc_flg = th.integer("BC_FLG");
     c.algo = th.integer("ALGO");
-    require_zero(in, line_t->line, "BC_FLG", c.bc_flg, "boundary conditions off in contact");
     if (c.lmax < c.lmin) {
       in.fail(line_t->line, "LMAX",
               fmt::format("LMAX = {} is below LMIN = {}: no gap could carry heat", c.lmax, c.lmin));

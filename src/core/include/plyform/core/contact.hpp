@@ -75,6 +75,9 @@ struct ContactHeat {
   double lmax = 0.0;
   double ftosa = 0.5;
   bool one_way = false;  ///< ALGO 1: the contact leaves the master's temperature unchanged
+  /// BC_FLG 1: convection, radiation and flux are off at the nodes in contact (a slave node
+  /// with a closed gap, gap <= LMIN, and its segment's nodes).
+  bool boundaries_off_in_contact = false;
   /// *CONTROL_CONTACT FRCENG 1: the law's friction dissipation heats the sides, FTOSA of it
   /// the slave's (its nodes), the rest the master's (through the segment's shape functions).
   bool friction_heat = false;

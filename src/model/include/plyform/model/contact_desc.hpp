@@ -67,7 +67,7 @@ struct ContactDesc {
   double lmin = 0.0;     ///< LMIN: gaps up to LMIN are closed
   double lmax = 0.0;     ///< LMAX: no heat across gaps beyond LMAX
   double ftosa = 0.5;    ///< FTOSA: share of the friction heat to the slave side
-  int bc_flg = 0;        ///< BC_FLG: must be 0
+  int bc_flg = 0;        ///< BC_FLG: 1 = the heat boundaries are off where the sides touch
   int algo = 0;          ///< ALGO: 0 two-way, 1 one-way (the master's temperature unchanged)
   SourceLocation where;  ///< the keyword line
   SourceLocation card1;  ///< the line of card 1 (SSID ...)

@@ -117,10 +117,11 @@ class HeatSolver {
   std::vector<core::Index> bottom_, top_;  // node -> face unknown (-1: none; empty: none at all)
   std::vector<double> normal_;             // 3 per node: thick shells' area-weighted normals
   std::vector<std::array<core::Index, 5>> link_unknowns_;  // scratch of one step
-  std::vector<double> capacity_;                           // per unknown
-  std::vector<double> temperature_;                        // per unknown, at time_
-  std::vector<double> initial_;  // per unknown, at t = 0 (the books' reference)
-  std::vector<double> change_;   // the last step's T_{n+1} - T_n (the CG's first guess)
+  std::vector<char> covered_;     // scratch: nodes whose boundaries BC_FLG turns off (empty: none)
+  std::vector<double> capacity_;  // per unknown
+  std::vector<double> temperature_;  // per unknown, at time_
+  std::vector<double> initial_;      // per unknown, at t = 0 (the books' reference)
+  std::vector<double> change_;       // the last step's T_{n+1} - T_n (the CG's first guess)
   std::vector<std::pair<core::Index, std::size_t>> prescribed_;  // unknown, history
   std::vector<std::pair<core::Index, double>> generation_;       // unknown, volume x material
   std::vector<core::Index> generation_material_;                 // per entry of generation_
