@@ -20,6 +20,7 @@
 #include "plyform/model/mat_mooney_rivlin_desc.hpp"
 #include "plyform/model/mat_orthotropic_elastic_desc.hpp"
 #include "plyform/model/mat_plasticity_desc.hpp"
+#include "plyform/model/mat_reinforced_thermoplastic_desc.hpp"
 #include "plyform/model/mat_rigid_desc.hpp"
 #include "plyform/model/mat_thermal_plasticity_desc.hpp"
 #include "plyform/model/node_desc.hpp"
@@ -57,6 +58,7 @@ struct ModelDesc {
   std::vector<MatPiecewiseLinearPlasticityDesc> piecewise_linear_materials;
   std::vector<MatMooneyRivlinDesc> mooney_rivlin_materials;
   std::vector<MatElasticPlasticThermalDesc> elastic_plastic_thermal_materials;
+  std::vector<MatReinforcedThermoplasticDesc> reinforced_thermoplastic_materials;
   std::vector<MatAddThermalExpansionDesc> thermal_expansions;
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;
