@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -108,6 +109,68 @@ std::string expansion_text(const core::LoadCurve& alpha) {
                      *hi, alpha.x.front(), alpha.x.back());
 }
 
+// The parameters of a *MAT_REINFORCED_THERMOPLASTIC ply by name and unit, a line each (the
+// deck's units: "stress" is the deck's stress unit).
+void print_woven_ply(const core::ReinforcedThermoplastic& m, std::ostream& out) {
+  constexpr double deg = 180.0 / std::numbers::pi;
+  const auto range = [](const core::LoadCurve& c, const char* name) {
+    const auto [lo, hi] = std::minmax_element(c.y.begin(), c.y.end());
+    return fmt::format("{} {:g} to {:g} over temperatures {:g} to {:g}", name, *lo, *hi,
+                       c.x.front(), c.x.back());
+  };
+  const auto curve_text = [](const core::CurveTable& t, const char* what) {
+    if (t.value.size() <= 1)
+      return fmt::format("curve of {}", what);
+    return fmt::format("table of {} at {} temperatures {:g} to {:g}", what, t.value.size(),
+                       t.value.front(), t.value.back());
+  };
+  const std::string young = m.young_of_t.x.empty() ? fmt::format("EM {:g} (stress)", m.young)
+                                                   : range(m.young_of_t, "EM (stress, LCEM)");
+  const std::string nu = m.poisson_of_t.x.empty() ? fmt::format("PRM {:g}", m.poisson)
+                                                  : range(m.poisson_of_t, "PRM (LCPRM)");
+  fmt::print(out, "    matrix: {}, {}, {}\n", young, nu,
+             m.yield.curve.empty()
+                 ? std::string("elastic")
+                 : "J2, isotropic hardening, LCSIGY " +
+                       curve_text(m.yield, "yield stress (stress) against plastic strain"));
+  static constexpr const char* kAxes[] = {"0 (element edge 1-2)", "", "2 (global vector a)",
+                                          "3 (v x normal)"};
+  fmt::print(out, "    material axes: AOPT {}{}\n", kAxes[m.aopt],
+             m.aopt == 2
+                 ? fmt::format(" a = ({:g}, {:g}, {:g})", m.a[0], m.a[1], m.a[2])
+                 : fmt::format(", MANGL {:g} degrees (element BETA where given)", m.angle * deg));
+  for (int i = 0; i < m.families; ++i) {
+    const auto& f = m.fibre[static_cast<std::size_t>(i)];
+    fmt::print(out,
+               "    fibre family {}: ALPH{} {:g} degrees, {}, tension only; G23_{} {:g}, G31_{} "
+               "{:g} (stress, transverse shear)\n",
+               i + 1, i + 1, f.alpha * deg,
+               f.stress.curve.empty()
+                   ? fmt::format("EF{} {:g} (stress)", i + 1, f.modulus)
+                   : fmt::format("LCEF{} {}", i + 1,
+                                 curve_text(f.stress, "nominal stress against fibre strain")),
+               i + 1, f.g23, i + 1, f.g31);
+  }
+  for (int k = 0; k + 1 < m.families; ++k) {
+    const auto& sh = m.shear[static_cast<std::size_t>(k)];
+    const std::string pair = k == 0 ? "12" : "23";
+    std::string response =
+        sh.stress.curve.empty()
+            ? fmt::format("linear, G{} {:g} (stress)", pair, sh.modulus)
+            : fmt::format("METH{} {} ({}), LCG{} {}", pair, sh.meth,
+                          sh.meth == 3
+                              ? fmt::format("elasto-plastic, unloading G{} {:g}", pair, sh.modulus)
+                              : std::string("elastic"),
+                          pair, curve_text(sh.stress, "shear stress against shear angle (rad)"));
+    if (sh.lock_angle > 0.0)
+      response += fmt::format(
+          "; locking at ALOC{} {:g} rad ({:.1f} degrees), then GLOC{} {:g} "
+          "(stress)",
+          pair, sh.lock_angle, sh.lock_angle * deg, pair, sh.lock_modulus);
+    fmt::print(out, "    shear {}-{}: {}\n", k + 1, k + 2, response);
+  }
+}
+
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
 // runtime model cannot be built.
 void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream& out) {
@@ -158,6 +221,8 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
     fmt::print(out, "  part {} '{}': {} shells, NIP {}, {}{}\n", part.id, part.title, b.size(),
                b.nip, material_name(mat), expansion_text(b.expansion));
+    if (const auto* ply = std::get_if<core::ReinforcedThermoplastic>(&mat))
+      print_woven_ply(*ply, out);
     if (std::holds_alternative<core::RigidMaterial>(mat))
       continue;
     for (std::size_t e = 0; e < b.size(); ++e) {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <variant>
 
 #include "plyform/element/shell_kernels.hpp"
+#include "plyform/material/woven_ply.hpp"
 
 namespace plyform::app {
 
@@ -131,6 +133,17 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
   stress_bottom_.resize(6 * cells);
   plastic_strain_.assign(cells, 0.0);
   thickness_.assign(cells, std::numeric_limits<double>::quiet_NaN());  // solids: none
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    const auto* ply = std::get_if<core::ReinforcedThermoplastic>(
+        &model.materials[static_cast<std::size_t>(b.material)]);
+    if (ply != nullptr)
+      fibre_families_ = std::max(fibre_families_, ply->families);
+  }
+  if (fibre_families_ > 0) {
+    for (int i = 0; i < fibre_families_; ++i)
+      fibre_[i].assign(3 * cells, std::numeric_limits<double>::quiet_NaN());
+    shear_angle_.assign(cells, std::numeric_limits<double>::quiet_NaN());
+  }
 }
 
 void ResultWriter::state(const engine::Snapshot& s) {
@@ -200,6 +213,21 @@ void ResultWriter::state(const engine::Snapshot& s) {
         eps = std::max(eps, st.eps_p[e * nip + q]);
       plastic_strain_[cell] = eps;
       thickness_[cell] = st.thickness[e];
+      if (const auto* ply = std::get_if<core::ReinforcedThermoplastic>(
+              &model_.materials[static_cast<std::size_t>(blk.material)])) {
+        // The fibres at the middle point (nip / 2), turned from the frame to global axes.
+        const std::size_t q = e * nip + nip / 2;
+        const material::WovenPlyState w = material::woven_ply_state(
+            *ply, st.history.empty() ? nullptr : &st.history[material::WovenPlyHistory::count * q]);
+        if (w.initialised) {
+          for (int i = 0; i < ply->families; ++i) {
+            for (int d = 0; d < 3; ++d)
+              fibre_[i][3 * cell + static_cast<std::size_t>(d)] =
+                  w.direction[i][0] * e1[d] + w.direction[i][1] * e2[d];
+          }
+          shear_angle_[cell] = w.shear_angle[0] * 180.0 / std::numbers::pi;
+        }
+      }
     }
   }
   if (!model_.temperature0.empty() || model_.thermal.enabled)
@@ -246,6 +274,11 @@ void ResultWriter::state(const engine::Snapshot& s) {
                      {"stress_bottom", 6, stress_bottom_},
                      {"plastic_strain", 1, plastic_strain_},
                      {"thickness", 1, thickness_}};
+  static constexpr const char* kFibre[3] = {"fibre_1", "fibre_2", "fibre_3"};
+  for (int i = 0; i < fibre_families_; ++i)
+    piece.cell_data.push_back({kFibre[i], 3, fibre_[i]});
+  if (fibre_families_ > 1)
+    piece.cell_data.push_back({"shear_angle", 1, shear_angle_});
   piece.point_ids = {{"node_id", node_ids_}};
   piece.cell_ids = {{"element_id", element_ids_}, {"part", part_ids_}};
   series_.write_state(s.time, piece);

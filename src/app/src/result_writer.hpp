@@ -62,6 +62,10 @@ class ResultWriter : public engine::OutputSink {
   // Per-state buffers, reused.
   std::vector<double> displacement_, velocity_, temperature_, stress_, stress_top_, stress_bottom_,
       plastic_strain_, thickness_, beta_, contact_pressure_, gap_, contact_state_;
+  // Woven plies (*MAT_REINFORCED_THERMOPLASTIC): each family's fibre direction (global, unit)
+  // and the shear angle between families 1 and 2 (degrees); NaN in other cells.
+  int fibre_families_ = 0;  // the most families of any ply block (0: no ply, no arrays)
+  std::vector<double> fibre_[3], shear_angle_;
   std::vector<output::NodoutRow> rows_;
   std::vector<output::RcforcRow> rcforc_rows_;
   std::vector<output::CohesiveRow> cohesive_rows_;

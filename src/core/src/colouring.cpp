@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <numeric>
 
 #include "plyform/core/model.hpp"
@@ -8,10 +9,16 @@
 namespace plyform::core {
 namespace {
 
+// A per-element array of a block: `per_element` values for each element.
+struct PerElement {
+  std::vector<double>* values;
+  int per_element;
+};
+
 // Greedy colouring in element order, then a stable reorder by colour of the block's per-element
-// arrays (`per_element` values each in `extra`), filling colour_start.
+// arrays (`extras`; empty ones are left alone), filling colour_start.
 template <int kNodes, class Block>
-bool colour_block(Block& b, std::size_t node_count, std::vector<double>* extra, int per_element) {
+bool colour_block(Block& b, std::size_t node_count, std::initializer_list<PerElement> extras) {
   constexpr int kWords = 2;  // up to 128 colours
   const std::size_t n = b.size();
   std::vector<std::array<std::uint64_t, kWords>> used(node_count, {0, 0});
@@ -45,22 +52,26 @@ bool colour_block(Block& b, std::size_t node_count, std::vector<double>* extra, 
                    [&](std::size_t a, std::size_t c) { return colour[a] < colour[c]; });
   std::vector<GlobalId> ids(n);
   std::vector<Index> conn(kNodes * n);
-  std::vector<double> values(extra ? extra->size() : 0);
+  for (const PerElement& x : extras) {
+    if (x.values->empty())
+      continue;
+    const auto per = static_cast<std::size_t>(x.per_element);
+    std::vector<double> values(x.values->size());
+    for (std::size_t k = 0; k < n; ++k) {
+      for (std::size_t j = 0; j < per; ++j)
+        values[per * k + j] = (*x.values)[per * order[k] + j];
+    }
+    *x.values = std::move(values);
+  }
   for (std::size_t k = 0; k < n; ++k) {
     ids[k] = b.element_id[order[k]];
     for (int i = 0; i < kNodes; ++i) {
       conn[kNodes * k + static_cast<std::size_t>(i)] =
           b.connectivity[kNodes * order[k] + static_cast<std::size_t>(i)];
     }
-    for (int j = 0; extra && j < per_element; ++j) {
-      values[static_cast<std::size_t>(per_element) * k + static_cast<std::size_t>(j)] =
-          (*extra)[static_cast<std::size_t>(per_element) * order[k] + static_cast<std::size_t>(j)];
-    }
   }
   b.element_id = std::move(ids);
   b.connectivity = std::move(conn);
-  if (extra)
-    *extra = std::move(values);
   b.colour_start.assign(static_cast<std::size_t>(colours) + 1, 0);
   for (std::size_t e = 0; e < n; ++e)
     ++b.colour_start[static_cast<std::size_t>(colour[e]) + 1];
@@ -73,11 +84,11 @@ bool colour_block(Block& b, std::size_t node_count, std::vector<double>* extra, 
 
 bool colour_element_blocks(Model& model) {
   for (SolidBlock& b : model.solid_blocks) {
-    if (!colour_block<8>(b, model.node_count(), nullptr, 0))
+    if (!colour_block<8>(b, model.node_count(), {}))
       return false;
   }
   for (ShellBlock& b : model.shell_blocks) {
-    if (!colour_block<4>(b, model.node_count(), &b.thickness, 4))
+    if (!colour_block<4>(b, model.node_count(), {{&b.thickness, 4}, {&b.material_angle, 1}}))
       return false;
   }
   return true;

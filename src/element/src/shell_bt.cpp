@@ -124,7 +124,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   constexpr std::size_t kChunk = 16;
   constexpr std::size_t kPoints = kChunk * static_cast<std::size_t>(kMaxNip);
   double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
-  double pdzz[kPoints], pcos[kPoints], psin[kPoints];
+  double pdzz[kPoints], pcos[kPoints], psin[kPoints], pspin[kPoints];
   // Temperature (thermal blocks) and the plastic strain before the law (plastic work heat).
   double ptemp[kPoints], peps0[kPoints], peth[kPoints];
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
@@ -385,19 +385,33 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                               {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
                               {LX[3][k_el], LY[3][k_el], LZ[3][k_el]}};
       if constexpr (LawOf<M>::needs_material_axes) {
-        // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a,
-        // both projected on the shell.
+        // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a;
+        // AOPT 3: v x n; all projected on the shell. AOPT 0 and 3 then turn about the normal by
+        // the element card's BETA where it is not zero, else by the material's angle (MANGL).
         const material::MaterialAxes axes = LawOf<M>::axes(mat);
         double a3[3];
         for (int d = 0; d < 3; ++d)
           a3[d] = axes.aopt == 2 ? axes.a[d] : x[1][d] - x[0][d];
+        if (axes.aopt == 3) {
+          a3[0] = axes.v[1] * g.e3[2] - axes.v[2] * g.e3[1];
+          a3[1] = axes.v[2] * g.e3[0] - axes.v[0] * g.e3[2];
+          a3[2] = axes.v[0] * g.e3[1] - axes.v[1] * g.e3[0];
+        }
         const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
         const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
-        const double angle = std::atan2(ay, ax);
+        double angle = std::atan2(ay, ax);
+        if (axes.aopt != 2) {
+          const double beta = block.material_angle.empty() ? 0.0 : block.material_angle[e];
+          angle += beta != 0.0 ? beta : axes.angle;
+        }
         for (std::size_t k = 0; k < unip; ++k) {
           pcos[k_el * unip + k] = std::cos(angle);
           psin[k_el * unip + k] = std::sin(angle);
         }
+      }
+      if constexpr (material::law_needs_spin<LawOf<M>>()) {
+        for (std::size_t k = 0; k < unip; ++k)
+          pspin[k_el * unip + k] = phi;
       }
     }
     {
@@ -415,6 +429,8 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         pts.history = &st.history[per_point * q0];
       if (thermal)
         pts.temperature = ptemp;
+      if constexpr (material::law_needs_spin<Law>())
+        pts.spin = pspin;
       if (plastic_heat)
         std::copy_n(&st.eps_p[q0], unip * chunk, peps0);
       Law::update_shell(mat, unip * chunk, pts);

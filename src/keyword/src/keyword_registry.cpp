@@ -15,6 +15,7 @@ KeywordSpec include_keyword();
 KeywordSpec include_path_keyword();
 KeywordSpec parameter_keyword();
 KeywordSpec define_curve_keyword();
+KeywordSpec define_table_keyword();
 KeywordSpec user_interface_friction_keyword();
 KeywordSpec node_keyword();
 KeywordSpec element_solid_keyword();
@@ -92,6 +93,7 @@ std::span<const KeywordSpec> keyword_registry() {
       include_path_keyword(),
       parameter_keyword(),
       define_curve_keyword(),
+      define_table_keyword(),
       user_interface_friction_keyword(),
       node_keyword(),
       element_solid_keyword(),

@@ -3,12 +3,16 @@
 namespace plyform::material {
 
 std::optional<core::Material> material_from_deck(const model::ModelDesc& deck, int id,
-                                                 const DeckCurve& curve) {
+                                                 const DeckCurve& curve, const DeckTable& table) {
   std::optional<core::Material> found;
   for_each_law([&](auto tag) {
     using Law = typename decltype(tag)::type;
     for (const auto& card : Law::cards(deck)) {
-      if (card.id == id)
+      if (card.id != id)
+        continue;
+      if constexpr (requires { Law::from_card(card, curve, table); })
+        found = core::Material{Law::from_card(card, curve, table)};
+      else
         found = core::Material{Law::from_card(card, curve)};
     }
   });

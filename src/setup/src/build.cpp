@@ -1,6 +1,7 @@
 #include "plyform/setup/build.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -8,6 +9,7 @@
 
 #include "build_contact.hpp"
 #include "build_expansion.hpp"
+#include "build_tables.hpp"
 #include "build_thermal.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
@@ -24,6 +26,7 @@ struct Builder {
   core::Model m;
   std::unordered_map<int, Index> node, curve, part;
   std::unordered_map<int, const model::SetListDesc*> node_set, part_set;
+  std::unordered_map<int, core::CurveTable> table;  // *DEFINE_TABLE by id
 
   void error(const model::SourceLocation& where, std::string keyword, std::string field,
              std::string message) {
@@ -74,6 +77,7 @@ struct Builder {
       curve.emplace(c.id, static_cast<Index>(m.curves.size()));
       m.curves.push_back(std::move(lc));
     }
+    table = build_tables(d);
   }
 
   // The runtime material of a deck material id (any law), created once.
@@ -82,9 +86,14 @@ struct Builder {
     if (auto it = material_index.find(id); it != material_index.end())
       return it->second;
     // Each law reads its own cards (material/laws/, the registry's from_card).
-    std::optional<core::Material> law =
-        material::material_from_deck(d, id, [&](int curve_id) -> const core::LoadCurve& {
+    std::optional<core::Material> law = material::material_from_deck(
+        d, id,
+        [&](int curve_id) -> const core::LoadCurve& {
           return m.curves[static_cast<std::size_t>(curve.at(curve_id))];
+        },
+        [&](int table_id) -> const core::CurveTable* {
+          const auto it = table.find(table_id);
+          return it == table.end() ? nullptr : &it->second;
         });
     if (!law)
       return -1;
@@ -176,7 +185,8 @@ struct Builder {
                 "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
                     " is not a law for shells (use *MAT_ELASTIC, *MAT_ORTHOTROPIC_ELASTIC, "
                     "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
-                    "*MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
+                    "*MAT_ELASTIC_PLASTIC_THERMAL, *MAT_REINFORCED_THERMOPLASTIC or "
+                    "*MAT_RIGID)");
           continue;
         }
         if (sec.nip < 1 || sec.nip > 5) {
@@ -227,6 +237,10 @@ struct Builder {
         }
       }
       b.element_id.push_back(e.id);
+      if (e.beta != 0.0 && b.material_angle.empty())
+        b.material_angle.assign(b.element_id.size() - 1, 0.0);
+      if (!b.material_angle.empty())
+        b.material_angle.push_back(e.beta * std::numbers::pi / 180.0);
       for (int k = 0; k < 4; ++k) {
         b.connectivity.push_back(node.at(e.nodes[static_cast<std::size_t>(k)]));
         double t = e.has_thickness_card ? e.thickness[static_cast<std::size_t>(k)] : 0.0;
@@ -396,7 +410,7 @@ struct Builder {
 }  // namespace
 
 BuildResult build(const model::ModelDesc& desc) {
-  Builder b{desc, {}, {}, {}, {}, {}, {}, {}, {}};
+  Builder b{desc, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   b.m.title = desc.title;
   b.nodes();
   b.curves();

@@ -6,6 +6,7 @@
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/validate_contact.hpp"
 #include "plyform/setup/validate_mesh.hpp"
+#include "validate_woven_ply.hpp"
 
 namespace plyform::setup {
 
@@ -22,6 +23,9 @@ std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
   for (keyword::Diagnostic& d : validate_contact(model)) {
     errors.push_back(std::move(d));
   }
+  for (keyword::Diagnostic& d : validate_woven_plies(model)) {
+    errors.push_back(std::move(d));
+  }
 
   std::unordered_map<int, const model::CurveDesc*> curves;
   for (const model::CurveDesc& c : model.curves) {
@@ -30,6 +34,42 @@ std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
       errors.push_back(
           {c.where, "*DEFINE_CURVE", "LCID",
            "curve id " + std::to_string(c.id) + " is already defined at " + at(it->second->where)});
+    }
+  }
+
+  // Tables: ids apart from the curves' and each other's, a curve for every value (the curves
+  // that follow the table), the LCID column (where written) naming that curve.
+  std::unordered_map<int, const model::DefineTableDesc*> tables;
+  for (const model::DefineTableDesc& t : model.tables) {
+    if (const auto c = curves.find(t.id); c != curves.end()) {
+      errors.push_back({t.where, "*DEFINE_TABLE", "TBID",
+                        "table id " + std::to_string(t.id) + " is the id of the curve at " +
+                            at(c->second->where) + ": tables and curves share one id space"});
+    }
+    const auto [it, inserted] = tables.emplace(t.id, &t);
+    if (!inserted) {
+      errors.push_back(
+          {t.where, "*DEFINE_TABLE", "TBID",
+           "table id " + std::to_string(t.id) + " is already defined at " + at(it->second->where)});
+    }
+    const std::vector<int> ids = model::table_curve_ids(model, t);
+    if (ids.size() < t.values.size()) {
+      errors.push_back({t.where, "*DEFINE_TABLE", "VALUE",
+                        "table " + std::to_string(t.id) + " has " +
+                            std::to_string(t.values.size()) + " values but only " +
+                            std::to_string(ids.size()) +
+                            " *DEFINE_CURVE keywords follow it (one curve per value, in order, "
+                            "after the table)"});
+    }
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (t.lcid_written[i] != 0 && t.lcid_written[i] != ids[i]) {
+        errors.push_back({t.value_where[i], "*DEFINE_TABLE", "LCID",
+                          "table " + std::to_string(t.id) + ": value card " +
+                              std::to_string(i + 1) + " names curve " +
+                              std::to_string(t.lcid_written[i]) + " but the curve that follows " +
+                              "the table in that place is " + std::to_string(ids[i]) +
+                              " (the curves of a table are the ones that follow it, in order)"});
+      }
     }
   }
 

@@ -204,6 +204,7 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   add_materials(model.piecewise_linear_materials, "*MAT_PIECEWISE_LINEAR_PLASTICITY");
   add_materials(model.mooney_rivlin_materials, "*MAT_MOONEY-RIVLIN_RUBBER");
   add_materials(model.elastic_plastic_thermal_materials, "*MAT_ELASTIC_PLASTIC_THERMAL");
+  add_materials(model.reinforced_thermoplastic_materials, "*MAT_REINFORCED_THERMOPLASTIC");
   add_in_deck_order(materials, std::move(material_definitions), model, "MID", errors);
   IdTable rigid_materials("rigid material", "*MAT_RIGID");
   for (const model::MatRigidDesc& m : model.rigid_materials) {

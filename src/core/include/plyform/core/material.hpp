@@ -3,8 +3,12 @@
 // carries one, dispatched once per block. Each member's law (update, moduli, name, history) is
 // its unit in src/material/include/plyform/material/laws/, listed in law_registry.hpp.
 
+#include <array>
 #include <variant>
 #include <vector>
+
+#include "plyform/core/curve_table.hpp"
+#include "plyform/core/load_curve.hpp"
 
 namespace plyform::core {
 
@@ -91,9 +95,46 @@ struct RigidMaterial {
   int con2 = 0;
 };
 
+/// *MAT_REINFORCED_THERMOPLASTIC (249), shells: a ply of fibre families in a thermoplastic
+/// matrix. The stress is the sum of the matrix's (isotropic, hypoelastic, E and nu against
+/// temperature, optionally J2 with a yield curve or a table of yield curves over temperature),
+/// each family's fibre stress along its current direction (tension only) and the shear stress
+/// between neighbouring families against their shear angle (the change of the angle between
+/// them), with locking. Curves of a family or a shear pair may be tables over temperature: a
+/// CurveTable with one value is a plain curve. Derivation: docs/materials.md.
+struct ReinforcedThermoplastic {
+  struct Fibre {
+    double alpha = 0.0;    ///< angle from the material axis a about the normal, radians
+    double modulus = 0.0;  ///< EF: nominal fibre stress per unit fibre strain (no curve)
+    CurveTable stress;     ///< LCEF: nominal stress against engineering fibre strain (empty: EF)
+    double g23 = 0.0;      ///< transverse shear modulus across the fibres
+    double g31 = 0.0;      ///< transverse shear modulus along the fibres
+  };
+  struct Shear {
+    double modulus = 0.0;       ///< G: linear shear modulus; METH 3 the elastic (unloading) slope
+    CurveTable stress;          ///< LCG: shear stress against the shear angle, radians (empty: G)
+    double lock_angle = 0.0;    ///< ALOC, radians (0: no locking)
+    double lock_modulus = 0.0;  ///< GLOC
+    int meth = 2;               ///< 2 elastic curve, 3 elasto-plastic curve (with a curve only)
+  };
+  double density = 0.0;
+  double young = 0.0;      ///< EM
+  LoadCurve young_of_t;    ///< LCEM (empty: EM)
+  double poisson = 0.0;    ///< PRM
+  LoadCurve poisson_of_t;  ///< LCPRM (empty: PRM)
+  CurveTable yield;  ///< LCSIGY: yield stress against eps_p (over temperature); empty: elastic
+  int families = 2;  ///< NFIB
+  std::array<Fibre, 3> fibre{};
+  std::array<Shear, 2> shear{};  ///< between families (1, 2) and (2, 3)
+  int aopt = 0;                  ///< 0 edge 1-2, 2 global vector a, 3 v x normal
+  double a[3] = {1.0, 0.0, 0.0};
+  double v[3] = {0.0, 0.0, 0.0};
+  double angle = 0.0;  ///< MANGL, radians (AOPT 0 and 3)
+};
+
 using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
                               PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial,
-                              ElasticPlasticThermal>;
+                              ElasticPlasticThermal, ReinforcedThermoplastic>;
 
 // The law of each member (its kernel, moduli and name): material/law_registry.hpp.
 

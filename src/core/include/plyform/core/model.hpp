@@ -69,6 +69,9 @@ struct ShellBlock {
   std::vector<double> thickness;          ///< initial thickness at the 4 nodes of each element
   std::vector<std::size_t> colour_start;  ///< as SolidBlock::colour_start
   LoadCurve expansion;                    ///< as SolidBlock::expansion
+  /// The element card's material angle BETA, radians, per element (empty when no element of
+  /// the block has one): turns the material axes of AOPT 0 and 3 instead of the material's.
+  std::vector<double> material_angle;
   [[nodiscard]] std::size_t size() const { return element_id.size(); }
 };
 

@@ -16,6 +16,7 @@
 #include "plyform/material/laws/orthotropic_elastic.hpp"
 #include "plyform/material/laws/piecewise_linear_plasticity.hpp"
 #include "plyform/material/laws/power_law_plasticity.hpp"
+#include "plyform/material/laws/reinforced_thermoplastic.hpp"
 #include "plyform/material/laws/rigid.hpp"
 
 namespace plyform::material {
@@ -25,7 +26,8 @@ struct LawList {};
 
 /// The registry.
 using Laws = LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
-                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw>;
+                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw,
+                     ReinforcedThermoplasticLaw>;
 
 namespace detail {
 template <class P, class List>
@@ -75,9 +77,11 @@ void for_each_law(F&& f) {
 }
 
 /// The runtime parameters of deck material `id` (any *MAT_ keyword of the registry), through the
-/// laws' from_card; none when no law's cards have that id.
+/// laws' from_card (curves by id, tables by id for the laws that read them); none when no law's
+/// cards have that id.
 [[nodiscard]] std::optional<core::Material> material_from_deck(const model::ModelDesc& deck, int id,
-                                                               const DeckCurve& curve);
+                                                               const DeckCurve& curve,
+                                                               const DeckTable& table);
 
 [[nodiscard]] const LawInfo& law_info(const core::Material& m);
 [[nodiscard]] Moduli moduli(const core::Material& m);

@@ -47,6 +47,10 @@ struct ShellPoints {
   double* history = nullptr;  ///< the law's own history, its history.size() per point
   /// Laws that read temperatures (needs_temperature): per point, at t_{n+1}; null otherwise.
   const double* temperature = nullptr;
+  /// Laws that carry directions (needs_spin): the rotation of the material relative to the
+  /// co-rotational frame over the step, radians about the normal, per point (the element has
+  /// already turned the stored stresses by it); null otherwise.
+  const double* spin = nullptr;
 };
 
 /// *MAT_ELASTIC, plane stress: d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise,

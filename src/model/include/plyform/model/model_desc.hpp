@@ -10,6 +10,7 @@
 #include "plyform/model/control_desc.hpp"
 #include "plyform/model/curve_desc.hpp"
 #include "plyform/model/database_desc.hpp"
+#include "plyform/model/define_table_desc.hpp"
 #include "plyform/model/element_shell_desc.hpp"
 #include "plyform/model/element_solid_desc.hpp"
 #include "plyform/model/hourglass_desc.hpp"
@@ -42,6 +43,7 @@ struct ModelDesc {
   std::string title;            ///< *TITLE (the last one read)
   std::string keyword_options;  ///< text after *KEYWORD on its line (memory size, ...), if any
   std::vector<CurveDesc> curves;
+  std::vector<DefineTableDesc> tables;  ///< *DEFINE_TABLE; their curves are in `curves`
   std::vector<UserInterfaceFrictionDesc> user_interface_frictions;
 
   // Mesh
@@ -104,5 +106,15 @@ struct ModelDesc {
   /// to the deck whose files give the same value.
   std::uint64_t source_fingerprint = 14695981039346656037ull;
 };
+
+/// The curve ids of a table: the ids of the curves read after it, one per value (fewer when the
+/// deck ends first).
+inline std::vector<int> table_curve_ids(const ModelDesc& deck, const DefineTableDesc& table) {
+  std::vector<int> ids;
+  for (std::size_t i = table.first_curve;
+       i < deck.curves.size() && ids.size() < table.values.size(); ++i)
+    ids.push_back(deck.curves[i].id);
+  return ids;
+}
 
 }  // namespace plyform::model

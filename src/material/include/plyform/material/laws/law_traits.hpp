@@ -22,6 +22,12 @@
 //   static MaterialAxes axes(const Parameters&);                        when needs_material_axes
 //   static const auto& cards(const model::ModelDesc&);  the deck's cards of its keyword
 //   static Parameters from_card(const Card&, const DeckCurve&);  their values as parameters
+//                                       (or from_card(const Card&, const DeckCurve&, const
+//                                       DeckTable&) for laws whose cards may name tables)
+//   static constexpr bool needs_spin;   optional (false when absent): shells, the in-plane
+//                                       rotation of the material relative to the co-rotational
+//                                       frame over the step (ShellPoints::spin), for laws that
+//                                       carry directions in their history
 // The element kernels read only these traits: a new law needs no edit to a kernel.
 
 #include <array>
@@ -29,6 +35,7 @@
 #include <functional>
 #include <string_view>
 
+#include "plyform/core/curve_table.hpp"
 #include "plyform/core/load_curve.hpp"
 #include "plyform/model/model_desc.hpp"
 
@@ -55,6 +62,8 @@ inline Moduli isotropic_moduli(double young, double poisson) {
 
 /// A deck curve by its id (the runtime model's copy), for laws whose cards refer to curves.
 using DeckCurve = std::function<const core::LoadCurve&(int id)>;
+/// A deck table (*DEFINE_TABLE) by its id; null when `id` is no table (then it is a curve).
+using DeckTable = std::function<const core::CurveTable*(int id)>;
 
 /// n solid integration points of one call (structure of arrays).
 struct SolidPoints {
@@ -78,11 +87,24 @@ constexpr bool law_needs_temperature() {
     return false;
 }
 
+/// Whether a shell law reads the in-plane spin relative to the frame (its optional needs_spin).
+template <class Law>
+constexpr bool law_needs_spin() {
+  if constexpr (requires { Law::needs_spin; })
+    return Law::needs_spin;
+  else
+    return false;
+}
+
 /// A shell law's material axis a: AOPT 0 along the element's edge from node 1 to node 2, AOPT 2
-/// the global vector `a`, both projected on the shell.
+/// the global vector `a`, AOPT 3 the cross product of the global vector `v` with the shell's
+/// normal, all projected on the shell; AOPT 0 and 3 then turned about the normal by `angle`
+/// (or by the element card's BETA where that is not zero).
 struct MaterialAxes {
   int aopt = 0;
   const double* a = nullptr;  ///< 3 components (AOPT 2)
+  const double* v = nullptr;  ///< 3 components (AOPT 3)
+  double angle = 0.0;         ///< radians (AOPT 0 and 3)
 };
 
 }  // namespace plyform::material
