@@ -27,6 +27,8 @@ KeywordSpec mat_elastic_keyword();
 KeywordSpec mat_001_keyword();
 KeywordSpec mat_orthotropic_elastic_keyword();
 KeywordSpec mat_002_keyword();
+KeywordSpec mat_reinforced_thermoplastic_keyword();
+KeywordSpec mat_249_keyword();
 KeywordSpec mat_elastic_plastic_thermal_keyword();
 KeywordSpec mat_004_keyword();
 KeywordSpec mat_power_law_plasticity_keyword();
@@ -105,6 +107,8 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_001_keyword(),
       mat_orthotropic_elastic_keyword(),
       mat_002_keyword(),
+      mat_reinforced_thermoplastic_keyword(),
+      mat_249_keyword(),
       mat_elastic_plastic_thermal_keyword(),
       mat_004_keyword(),
       mat_power_law_plasticity_keyword(),

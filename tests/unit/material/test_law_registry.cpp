@@ -17,14 +17,16 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
     const char* keyword;
     int number;
     bool solids, shells;
+    std::size_t history;
   } cases[] = {
-      {core::ElasticMaterial{}, "*MAT_ELASTIC", 1, true, true},
-      {core::OrthotropicElasticMaterial{}, "*MAT_ORTHOTROPIC_ELASTIC", 2, false, true},
-      {core::PowerLawPlasticity{}, "*MAT_POWER_LAW_PLASTICITY", 18, true, true},
-      {core::RigidMaterial{}, "*MAT_RIGID", 20, false, false},
-      {core::PiecewiseLinearPlasticity{}, "*MAT_PIECEWISE_LINEAR_PLASTICITY", 24, true, true},
-      {core::MooneyRivlinMaterial{}, "*MAT_MOONEY-RIVLIN_RUBBER", 27, true, false},
-      {core::ElasticPlasticThermal{}, "*MAT_ELASTIC_PLASTIC_THERMAL", 4, true, true},
+      {core::ElasticMaterial{}, "*MAT_ELASTIC", 1, true, true, 0},
+      {core::OrthotropicElasticMaterial{}, "*MAT_ORTHOTROPIC_ELASTIC", 2, false, true, 0},
+      {core::PowerLawPlasticity{}, "*MAT_POWER_LAW_PLASTICITY", 18, true, true, 0},
+      {core::RigidMaterial{}, "*MAT_RIGID", 20, false, false, 0},
+      {core::PiecewiseLinearPlasticity{}, "*MAT_PIECEWISE_LINEAR_PLASTICITY", 24, true, true, 0},
+      {core::MooneyRivlinMaterial{}, "*MAT_MOONEY-RIVLIN_RUBBER", 27, true, false, 0},
+      {core::ElasticPlasticThermal{}, "*MAT_ELASTIC_PLASTIC_THERMAL", 4, true, true, 0},
+      {core::ReinforcedThermoplastic{}, "*MAT_REINFORCED_THERMOPLASTIC", 249, false, true, 14},
   };
   std::set<std::string> keywords;
   for (const auto& c : cases) {
@@ -33,7 +35,7 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
     EXPECT_EQ(info.number, c.number) << c.keyword;
     EXPECT_EQ(material::law_for_solids(c.m), c.solids) << c.keyword;
     EXPECT_EQ(material::law_for_shells(c.m), c.shells) << c.keyword;
-    EXPECT_EQ(material::history_per_point(c.m), 0u) << c.keyword;
+    EXPECT_EQ(material::history_per_point(c.m), c.history) << c.keyword;
     keywords.insert(std::string(info.keyword));
   }
   EXPECT_EQ(keywords.size(), std::variant_size_v<core::Material>);

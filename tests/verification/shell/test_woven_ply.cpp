@@ -283,30 +283,30 @@ TEST(WovenPly, RigidRotationLeavesNoStressAndTurnsTheFibres) {
 
 // A strip [0, w] x [0, h] meshed along the diagonals (the families at +-45 degrees follow the
 // element edges, as a bias-extension specimen is meshed): the nodes of the rotated lattice
-// (i a, j a), i + j even, a = w / n = h / mm (n, mm even); a diamond around each (i, j) with
+// (i a, j a), i + j even, a = w / nx = h / ny (nx, ny even); a diamond around each (i, j) with
 // i + j odd, a triangle (N3 = N4) where it meets the boundary.
-core::Model fibre_aligned_strip(double w, double h, int n, int mm, double t,
+core::Model fibre_aligned_strip(double w, double h, int nx, int ny, double t,
                                 const core::Material& material) {
   core::Model m;
-  const double a = w / n;
-  std::vector<int> index((n + 1) * (mm + 1), -1);
-  for (int j = 0; j <= mm; ++j)
-    for (int i = 0; i <= n; ++i) {
+  const double a = w / nx;
+  std::vector<int> index((nx + 1) * (ny + 1), -1);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
       if ((i + j) % 2 != 0)
         continue;
-      index[j * (n + 1) + i] = static_cast<int>(m.node_id.size());
+      index[j * (nx + 1) + i] = static_cast<int>(m.node_id.size());
       m.node_id.push_back(static_cast<core::GlobalId>(m.node_id.size() + 1));
       m.x0.push_back(a * i);
-      m.y0.push_back(h * j / mm);
+      m.y0.push_back(h * j / ny);
       m.z0.push_back(0.0);
     }
   const auto at = [&](int i, int j) {
-    return i < 0 || j < 0 || i > n || j > mm ? -1 : index[j * (n + 1) + i];
+    return i < 0 || j < 0 || i > nx || j > ny ? -1 : index[j * (nx + 1) + i];
   };
   core::ShellBlock b;
   b.nip = 1;
-  for (int j = 0; j <= mm; ++j)
-    for (int i = 0; i <= n; ++i) {
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
       if ((i + j) % 2 == 0)
         continue;
       // Counter-clockwise: below, right, above, left.
@@ -342,7 +342,7 @@ struct BiasResult {
   double slope_locked = 0.0;    // 48 to 51 degrees
 };
 
-BiasResult bias_extension(int n, int mm) {
+BiasResult bias_extension(int nx, int ny) {
   const double w = 20.0, h = 80.0, t = 0.5, dl = h - w;
   core::ReinforcedThermoplastic ply = woven(0.2, 5000.0, 0.05);
   ply.a[0] = 0.0, ply.a[1] = 1.0;  // axis a along the pull (y)
@@ -350,7 +350,7 @@ BiasResult bias_extension(int n, int mm) {
   ply.fibre[1].alpha = -45.0 * kDeg;
   ply.shear[0].lock_angle = 45.0 * kDeg;
   ply.shear[0].lock_modulus = 20.0;
-  core::Model m = fibre_aligned_strip(w, h, n, mm, t, ply);
+  core::Model m = fibre_aligned_strip(w, h, nx, ny, t, ply);
   const auto gamma_of = [&](double d) {
     return 0.5 * kPi - 2.0 * std::acos((dl + d) / (std::sqrt(2.0) * dl));
   };

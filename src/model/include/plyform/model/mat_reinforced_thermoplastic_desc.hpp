@@ -35,18 +35,18 @@ struct FibreShearDesc {
 };
 
 struct MatReinforcedThermoplasticDesc {
-  int id = 0;             ///< MID
-  std::string title;      ///< from the _TITLE option; empty otherwise
-  double density = 0.0;   ///< RO, mass / length^3
-  double em = 0.0;        ///< EM: the matrix's Young's modulus, stress
-  int lcem = 0;           ///< LCEM: curve of EM against temperature (replaces EM when non-zero)
-  double prm = 0.0;       ///< PRM: the matrix's Poisson's ratio
-  int lcprm = 0;          ///< LCPRM: curve of PRM against temperature (replaces PRM)
-  int lcsigy = 0;         ///< LCSIGY: the matrix's yield stress against effective plastic
-                          ///< strain, a curve or a table over temperature (0: elastic matrix)
-  double beta = 0.0;      ///< BETA: mixed hardening (0 kinematic, 1 isotropic)
-  int nfib = 0;           ///< NFIB: number of fibre families, 1..3
-  int aopt = 0;           ///< AOPT: material axes, 0, 2 or 3
+  int id = 0;                 ///< MID
+  std::string title;          ///< from the _TITLE option; empty otherwise
+  double density = 0.0;       ///< RO, mass / length^3
+  double em = 0.0;            ///< EM: the matrix's Young's modulus, stress
+  int lcem = 0;               ///< LCEM: curve of EM against temperature (replaces EM when non-zero)
+  double prm = 0.0;           ///< PRM: the matrix's Poisson's ratio
+  int lcprm = 0;              ///< LCPRM: curve of PRM against temperature (replaces PRM)
+  int lcsigy = 0;             ///< LCSIGY: the matrix's yield stress against effective plastic
+                              ///< strain, a curve or a table over temperature (0: elastic matrix)
+  double beta = 0.0;          ///< BETA: mixed hardening (0 kinematic, 1 isotropic)
+  int nfib = 0;               ///< NFIB: number of fibre families, 1..3
+  int aopt = 0;               ///< AOPT: material axes, 0, 2 or 3
   std::array<double, 3> p{};  ///< XP YP ZP (AOPT 1 and 4 only), as written
   std::array<double, 3> a{};  ///< A1 A2 A3: vector a (AOPT 2), global axes
   std::array<double, 3> v{};  ///< V1 V2 V3: vector v (AOPT 3), global axes
