@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "homogeneous_motion.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/material/woven_ply.hpp"
 #include "recording_sink.hpp"
@@ -38,33 +39,6 @@ core::ReinforcedThermoplastic woven(double em, double ef, double g12) {
 // A curve as a one-value table.
 core::CurveTable curve(std::vector<double> x, std::vector<double> y) {
   return core::CurveTable{{0.0}, {core::LoadCurve{std::move(x), std::move(y)}}};
-}
-
-// Every node follows x = F(s) X, s from 0 to 1 over `end` in k steps of the tabulated motion.
-template <class F>
-void prescribe_homogeneous(core::Model& m, double end, int k, F&& deformation) {
-  for (std::size_t i = 0; i < m.node_count(); ++i) {
-    std::vector<double> t, ux, uy;
-    for (int s = 0; s <= k; ++s) {
-      double f[2][2];
-      deformation(static_cast<double>(s) / k, f);
-      t.push_back(end * s / k);
-      ux.push_back(f[0][0] * m.x0[i] + f[0][1] * m.y0[i] - m.x0[i]);
-      uy.push_back(f[1][0] * m.x0[i] + f[1][1] * m.y0[i] - m.y0[i]);
-    }
-    const auto node = static_cast<core::Index>(i);
-    test::prescribe(m, {node}, 0, core::MotionKind::displacement, test::add_curve(m, t, ux));
-    test::prescribe(m, {node}, 1, core::MotionKind::displacement, test::add_curve(m, t, uy));
-    m.fixed.push_back({node, core::dof_z | core::dof_rx | core::dof_ry | core::dof_rz});
-  }
-}
-
-// The picture frame: the families along the frame's edges turn towards each other, each edge
-// keeping its length: F = [[cos g/2, sin g/2], [sin g/2, cos g/2]], the angle between the
-// families 90 degrees - g.
-void picture_frame(double gamma, double f[2][2]) {
-  f[0][0] = f[1][1] = std::cos(0.5 * gamma);
-  f[0][1] = f[1][0] = std::sin(0.5 * gamma);
 }
 
 // The shear angle of every point of the block at each state (radians), and the energies.
@@ -117,8 +91,8 @@ TEST(WovenPly, PictureFrameAngleAndShearEnergyFollowTheFrameAndTheCurve) {
   ply.shear[0].meth = 2;
   const double side = 10.0, t = 1.0, gmax = 55.0 * kDeg;
   core::Model m = test::plate(side, side, 2, 2, t, ply, 3);
-  prescribe_homogeneous(m, 1e-3, 400,
-                        [&](double s, double f[2][2]) { picture_frame(gmax * s, f); });
+  test::prescribe_homogeneous(m, 1e-3, 400,
+                              [&](double s, double f[2][2]) { test::picture_frame(gmax * s, f); });
   FrameRun run = run_frame(m, gmax, 1e-3);
   ASSERT_FALSE(run.time.empty());
   for (std::size_t i = 0; i < run.time.size(); ++i) {
@@ -145,32 +119,15 @@ TEST(WovenPly, PictureFrameAtTwoTemperaturesFollowsEachCurveOfTheTable) {
     const double side = 10.0, t = 1.0, gmax = 30.0 * kDeg;
     core::Model m = test::plate(side, side, 2, 2, t, ply, 3);
     m.temperature0.assign(m.node_count(), temp);
-    prescribe_homogeneous(m, 1e-3, 400,
-                          [&](double s, double f[2][2]) { picture_frame(gmax * s, f); });
+    test::prescribe_homogeneous(
+        m, 1e-3, 400, [&](double s, double f[2][2]) { test::picture_frame(gmax * s, f); });
     FrameRun run = run_frame(m, gmax, 1e-3);
     // Shear: tau = k g with k linear in temperature between the table's curves.
     const double w = (temp - 250.0) / 40.0;
     const double k = (1.0 - w) * 0.4 + w * 0.2;
     const double shear_work = t * 0.5 * k * gmax * gmax;
-    // Matrix: the frame's F = [[c, s], [s, c]] stretches along the diagonals by c + s and
-    // c - s and does not rotate, so the hypoelastic plane-stress matrix is elastic in the log
-    // strains e1 = ln(c + s), e2 = ln(c - s), with the thickness strain -nu/(1 - nu)(e1 + e2);
-    // its work per initial volume integral J (s1 de1 + s2 de2), by the midpoint rule.
-    const double em = (1.0 - w) * 2.0 + w * 0.5, nu = 0.3, c11 = em / (1 - nu * nu);
-    double matrix_work = 0.0;
-    const int steps = 20000;
-    for (int i = 0; i < steps; ++i) {
-      const auto strains = [&](double g) {
-        return std::pair{std::log(std::cos(g / 2) + std::sin(g / 2)),
-                         std::log(std::cos(g / 2) - std::sin(g / 2))};
-      };
-      const auto [a1, a2] = strains(gmax * i / steps);
-      const auto [b1, b2] = strains(gmax * (i + 1) / steps);
-      const double m1 = 0.5 * (a1 + b1), m2 = 0.5 * (a2 + b2);
-      const double jac = std::exp((m1 + m2) * (1.0 - nu / (1.0 - nu)));
-      matrix_work +=
-          t * jac * (c11 * (m1 + nu * m2) * (b1 - a1) + c11 * (m2 + nu * m1) * (b2 - a2));
-    }
+    const double em = (1.0 - w) * 2.0 + w * 0.5;
+    const double matrix_work = test::picture_frame_matrix_work(em, 0.3, gmax, t);
     const double total = shear_work + matrix_work;
     const engine::Energies& e = run.sink.energies.back();
     EXPECT_NEAR(e.internal / (side * side), total, 0.02 * total) << "T = " << temp;
@@ -238,7 +195,7 @@ TEST(WovenPly, RigidRotationLeavesNoStressAndTurnsTheFibres) {
   ply.fibre[1].alpha = -45.0 * kDeg;
   core::Model m = test::plate(10.0, 2.0, 5, 1, 0.5, ply, 3);
   const double end = 2e-4, theta_end = 0.5 * kPi;
-  prescribe_homogeneous(m, end, 4000, [&](double s, double f[2][2]) {
+  test::prescribe_homogeneous(m, end, 4000, [&](double s, double f[2][2]) {
     const double th = theta_end * s;
     f[0][0] = f[1][1] = std::cos(th);
     f[0][1] = -std::sin(th);
