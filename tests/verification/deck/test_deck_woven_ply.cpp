@@ -19,12 +19,13 @@
 namespace plyform {
 namespace {
 
-std::string frame_deck(double temperature) {
+std::string frame_deck(double temperature, const char* part = "1,1,249\n") {
   std::ostringstream os;
   os << "*KEYWORD\n*INCLUDE\n"
      << PLYFORM_SOURCE_DIR << "/examples/materials/cf_pa6_woven_ply.k\n"
      << "*CONTROL_TERMINATION\n0.001\n*DATABASE_GLSTAT\n0.0001\n"
-     << "*PART\nply\n1,1,249\n*SECTION_SHELL\n1,2,0.8333,3\n0.5,0.5,0.5,0.5\n"
+     << "*PART\nply\n"
+     << part << "*SECTION_SHELL\n1,2,0.8333,3\n0.5,0.5,0.5,0.5\n"
      << "*INITIAL_TEMPERATURE_SET\n0," << temperature << "\n*NODE\n";
   for (int j = 0; j <= 2; ++j)
     for (int i = 0; i <= 2; ++i)
@@ -79,6 +80,25 @@ TEST(DeckWovenPly, ShippedCarbonPa6SetShearsByItsTableInAPictureFrame) {
   const engine::Energies& e = sink.energies.back();
   EXPECT_NEAR(e.internal / (side * side), expected, 0.02 * expected)
       << "shear " << shear << ", matrix " << matrix;
+}
+
+// The one-point shell holds the fibres inextensible at its centre only: a woven ply with viscous
+// hourglass control is warned about (by part, naming HGID and IHQ 4), one with IHQ 4 is not.
+TEST(DeckWovenPly, ViscousHourglassControlIsWarnedAbout) {
+  test::TempDir dir;
+  const auto warnings_of = [&](const std::string& deck) {
+    const auto read = keyword::read_deck(dir.write("hg.k", deck));
+    EXPECT_TRUE(read.ok()) << read.errors.front().to_string();
+    std::string text;
+    for (const auto& w : setup::build(read.model).warnings)
+      text += w.to_string() + "\n";
+    return text;
+  };
+  const std::string viscous = warnings_of(frame_deck(260.0));
+  EXPECT_NE(viscous.find("HGID"), std::string::npos) << viscous;
+  EXPECT_NE(viscous.find("IHQ 4"), std::string::npos) << viscous;
+  const std::string stiff = warnings_of(frame_deck(260.0, "1,1,249,0,7\n*HOURGLASS\n7,4,0.03\n"));
+  EXPECT_EQ(stiff.find("HGID"), std::string::npos) << stiff;
 }
 
 }  // namespace

@@ -289,10 +289,11 @@ core::Model fibre_aligned_strip(double w, double h, int nx, int ny, double t,
   return m;
 }
 
-// The bias-extension test: a specimen W x H (H = 3 W) with its families at +-45 degrees to the
-// pull, clamped at both ends. With inextensible fibres its central zone shears purely, by the
-// kinematic formula gamma = pi/2 - 2 acos((D + d) / (sqrt 2 D)), D = H - W, d the stretch;
-// the force rises slowly while the weave shears and steeply once its yarns lock.
+// The bias-extension test: a specimen W x H (H = 2 W, the shortest for which the test has its
+// three zones) with its families at +-45 degrees to the pull, clamped at both ends. With
+// inextensible fibres its central zone shears purely, by the kinematic formula
+// gamma = pi/2 - 2 acos((D + d) / (sqrt 2 D)), D = H - W, d the stretch; the force rises slowly
+// while the weave shears and steeply once its yarns lock.
 struct BiasResult {
   double worst = 0.0;           // radians, the central zone against the formula up to 40 degrees
   double slope_shearing = 0.0;  // force per stretch, 20 to 35 degrees
@@ -300,7 +301,7 @@ struct BiasResult {
 };
 
 BiasResult bias_extension(int nx, int ny) {
-  const double w = 20.0, h = 80.0, t = 0.5, dl = h - w;
+  const double w = 20.0, h = w * ny / nx, t = 0.5, dl = h - w;
   core::ReinforcedThermoplastic ply = woven(0.2, 5000.0, 0.05);
   ply.a[0] = 0.0, ply.a[1] = 1.0;  // axis a along the pull (y)
   ply.fibre[0].alpha = 45.0 * kDeg;
@@ -308,6 +309,9 @@ BiasResult bias_extension(int nx, int ny) {
   ply.shear[0].lock_angle = 45.0 * kDeg;
   ply.shear[0].lock_modulus = 20.0;
   core::Model m = fibre_aligned_strip(w, h, nx, ny, t, ply);
+  // Stiffness hourglass control: a viscous one lets the element edges, the fibres of this
+  // fibre-aligned mesh, stretch in the hourglass modes (the warning of setup::build).
+  m.shell_blocks[0].hourglass.ihq = 4;
   const auto gamma_of = [&](double d) {
     return 0.5 * kPi - 2.0 * std::acos((dl + d) / (std::sqrt(2.0) * dl));
   };
@@ -387,15 +391,12 @@ BiasResult bias_extension(int nx, int ny) {
   return out;
 }
 
-// The kinematic formula is that of ideal zones with kinked fibres between them; the mesh smooths
-// the kinks over an element. Measured (H = 4 W, fibre-aligned lattice): the central zone lags the
-// formula by at most 3.3 degrees on a 2 mm lattice and 2.8 degrees on a 1 mm one, up to 40
-// degrees. The 1 degree of issue 13 is not reached at a mesh this test can afford; this checks
-// the 1 mm lattice within 3 degrees (so a regression in the fibre kinematics shows) and the
-// locking.
+// Measured: 0.04 degrees on a 2 mm lattice with IHQ 4 (2.1 to 3.6 degrees with viscous hourglass
+// control; and 2.2 (H = 4 W) and 3.6 degrees (H = 3 W) with IHQ 4, where the central zone reaches
+// the free edges: docs/materials.md).
 TEST(WovenPly, BiasExtensionCentralZoneFollowsTheKinematicFormulaAndLocks) {
-  const BiasResult fine = bias_extension(20, 80);
-  EXPECT_LT(fine.worst / kDeg, 3.0);
+  const BiasResult fine = bias_extension(10, 20);
+  EXPECT_LT(fine.worst / kDeg, 1.0);
   // The force: a slow rise while the weave shears, more than ten times steeper once locked.
   EXPECT_GT(fine.slope_shearing, 0.0);
   EXPECT_GT(fine.slope_locked, 10.0 * fine.slope_shearing);
