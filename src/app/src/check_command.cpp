@@ -179,6 +179,20 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                "units (as declared, no conversion): length {}, time {}, mass {}, temperature {}\n",
                desc.units->length, desc.units->time, desc.units->mass, desc.units->temp);
   }
+  if (desc.accuracy) {
+    // What *CONTROL_ACCURACY asks, and how plyform meets it.
+    const int inn = desc.accuracy->inn;
+    const char* frame =
+        inn == 1   ? "off"
+        : inn == 3 ? "solids: met, plyform's hexahedra have no element frame"
+                   : "shells: plyform's shell frame follows the edge N1-N2 (as INN 1); "
+                     "isotropic shells do not depend on its in-plane orientation, laws with "
+                     "element axes (AOPT 0) take them from the edge N1-N2 as written";
+    fmt::print(out,
+               "accuracy (*CONTROL_ACCURACY): OSU {}: met, plyform's stress update is always "
+               "objective; INN {}: {}\n",
+               desc.accuracy->osu, inn, frame);
+  }
   std::size_t one = 0, two = 0;
   for (const auto& b : m.solid_blocks) {
     (b.formulation == core::SolidFormulation::one_point ? one : two) += b.size();

@@ -17,6 +17,9 @@ constexpr const char* kGlstat = "glstat.csv";
 constexpr const char* kNodout = "nodout.csv";
 constexpr const char* kRbdout = "rbdout.csv";
 constexpr const char* kBndout = "bndout.csv";
+constexpr const char* kSpcforc = "spcforc.csv";
+constexpr const char* kSleout = "sleout.csv";
+constexpr const char* kMatsum = "matsum.csv";
 constexpr const char* kRcforc = "rcforc.csv";
 constexpr const char* kInterfaceEnergy = "interface_energy.csv";
 constexpr const char* kCohesive = "cohesive.csv";
@@ -70,6 +73,30 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
                         bndout_nodes_.end());
     bndout_.emplace(outdir / kBndout, std::vector<std::string>{"time", "node", "fx", "fy", "fz"},
                     at(kBndout));
+  }
+  if (model.output.spcforc_dt > 0.0) {
+    for (const core::FixedDofs& f : model.fixed) {
+      if ((f.dofs & (core::dof_x | core::dof_y | core::dof_z)) != 0)
+        spcforc_nodes_.push_back(f.node);
+    }
+    std::sort(spcforc_nodes_.begin(), spcforc_nodes_.end());
+    spcforc_nodes_.erase(std::unique(spcforc_nodes_.begin(), spcforc_nodes_.end()),
+                         spcforc_nodes_.end());
+    if (!spcforc_nodes_.empty()) {
+      spcforc_.emplace(outdir / kSpcforc,
+                       std::vector<std::string>{"time", "node", "fx", "fy", "fz"}, at(kSpcforc));
+    }
+  }
+  if (!model.contacts.empty() && model.output.sleout_dt > 0.0) {
+    sleout_.emplace(outdir / kSleout,
+                    std::vector<std::string>{"time", "interface", "energy", "friction"},
+                    at(kSleout));
+  }
+  if (model.output.matsum_dt > 0.0) {
+    matsum_.emplace(outdir / kMatsum,
+                    std::vector<std::string>{"time", "part", "rigid", "internal", "kinetic",
+                                             "hourglass", "momentum_x", "momentum_y", "momentum_z"},
+                    at(kMatsum));
   }
   if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
     rcforc_.emplace(outdir / output::rcforc_file_name, at(kRcforc));
@@ -305,6 +332,35 @@ void ResultWriter::boundary_forces(const engine::Snapshot& s) {
   }
 }
 
+void ResultWriter::constraint_forces(const engine::Snapshot& s) {
+  if (!spcforc_)
+    return;
+  const engine::NodalState& ns = *s.nodes;
+  for (core::Index n : spcforc_nodes_) {
+    const auto i = static_cast<std::size_t>(n);
+    spcforc_->row_mixed(
+        {s.time, static_cast<std::int64_t>(node_ids_[i]), ns.rx[i], ns.ry[i], ns.rz[i]});
+  }
+}
+
+void ResultWriter::interface_energies(double time,
+                                      const std::vector<contact::InterfaceReport>& interfaces) {
+  if (!sleout_)
+    return;
+  for (const contact::InterfaceReport& r : interfaces)
+    sleout_->row_mixed({time, static_cast<std::int64_t>(r.id), r.work, r.friction});
+}
+
+void ResultWriter::part_energies(double time, const std::vector<engine::PartEnergies>& parts) {
+  if (!matsum_)
+    return;
+  for (const engine::PartEnergies& p : parts) {
+    matsum_->row_mixed({time, static_cast<std::int64_t>(p.part),
+                        static_cast<std::int64_t>(p.rigid ? 1 : 0), p.internal, p.kinetic,
+                        p.hourglass, p.momentum[0], p.momentum[1], p.momentum[2]});
+  }
+}
+
 void ResultWriter::contact_forces(double time,
                                   const std::vector<contact::InterfaceReport>& interfaces) {
   if (!rcforc_)
@@ -399,6 +455,12 @@ void ResultWriter::save_state(core::StateArchive& archive) {
     put(kRbdout, *rbdout_);
   if (bndout_)
     put(kBndout, *bndout_);
+  if (spcforc_)
+    put(kSpcforc, *spcforc_);
+  if (sleout_)
+    put(kSleout, *sleout_);
+  if (matsum_)
+    put(kMatsum, *matsum_);
   if (rcforc_)
     put(kRcforc, rcforc_->csv());
   if (interface_energy_)

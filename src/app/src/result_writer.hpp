@@ -1,8 +1,9 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
-// glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, rcforc.csv and
-// interface_energy.csv (contacts), cohesive.csv (history nodes of cohesive interfaces), heat.csv
-// and tprint.csv (computed temperatures) and the progress line, in OUTDIR.
+// glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, spcforc.csv, matsum.csv,
+// rcforc.csv, interface_energy.csv and sleout.csv (contacts), cohesive.csv (history nodes of
+// cohesive interfaces), heat.csv and tprint.csv (computed temperatures) and the progress line,
+// in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -31,6 +32,10 @@ class ResultWriter : public engine::OutputSink {
   void progress(double time, double end_time, long cycle, double dt, double wall) override;
   void rigid_bodies(double time, const rigid::RigidBodies& bodies) override;
   void boundary_forces(const engine::Snapshot& s) override;
+  void constraint_forces(const engine::Snapshot& s) override;
+  void interface_energies(double time,
+                          const std::vector<contact::InterfaceReport>& interfaces) override;
+  void part_energies(double time, const std::vector<engine::PartEnergies>& parts) override;
   void contact_forces(double time,
                       const std::vector<contact::InterfaceReport>& interfaces) override;
   void heat(double time, const thermal::HeatLedger& ledger) override;
@@ -49,6 +54,10 @@ class ResultWriter : public engine::OutputSink {
   std::optional<output::RcforcFile> rcforc_;
   std::optional<output::CsvHistory> bndout_;
   std::vector<core::Index> bndout_nodes_;  // prescribed-motion nodes, in index order
+  std::optional<output::CsvHistory> spcforc_;
+  std::vector<core::Index> spcforc_nodes_;  // nodes with a translation held, in index order
+  std::optional<output::CsvHistory> sleout_;
+  std::optional<output::CsvHistory> matsum_;
   std::optional<output::CsvHistory> interface_energy_;
   std::optional<output::CohesiveFile> cohesive_;
   std::optional<output::CsvHistory> heat_;    // heat.csv (temperatures computed)

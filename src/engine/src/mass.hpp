@@ -25,4 +25,17 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
                        std::vector<element::SolidBlockState>& solids,
                        std::vector<element::ShellBlockState>& shells);
 
+/// Each deformable block's share of the nodal masses lumped_mass gave (mass scaling included,
+/// from the blocks' dt_factor): the block's nodes in the order its elements name them, with
+/// the mass and rotary inertia its elements put there. Summed over the blocks they are the
+/// nodal masses of lumped_mass (the part energies of matsum.csv add up to glstat's books).
+struct BlockMass {
+  std::vector<core::Index> nodes;
+  std::vector<double> mass, inertia;
+};
+void block_masses(const core::Model& model, const element::NodalView& nodes,
+                  const std::vector<element::SolidBlockState>& solids,
+                  const std::vector<element::ShellBlockState>& shells,
+                  std::vector<BlockMass>& solid_mass, std::vector<BlockMass>& shell_mass);
+
 }  // namespace plyform::engine

@@ -168,6 +168,9 @@ struct Simulation::State {
   // Output clocks.
   double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
   double next_bndout = 0.0, next_tprint = 0.0, next_heat = 0.0;
+  double next_spcforc = 0.0, next_sleout = 0.0, next_matsum = 0.0;
+  // Each deformable block's share of the nodal masses (*DATABASE_MATSUM only).
+  std::vector<BlockMass> solid_mass, shell_mass;
   bool warned_thermal = false;    // a thermal step's iterations did not converge
   double heat_written_at = -1.0;  // the time of the last heat.csv row
   bool state_written = false;
@@ -224,6 +227,7 @@ struct Simulation::State {
   void fix_rotations();
   void sync();
   double kinetic();
+  std::vector<PartEnergies> part_energies();
   [[nodiscard]] double stable_step(const InternalResult& x) const {
     return fixed_step ? model.controls.dt_init : tssfac * x.dt_min;
   }
@@ -299,6 +303,8 @@ void Simulation::State::set_up_run() {
   }
   set_up_element_temperatures();
   const MassResult mass = lumped_mass(model, view, s.mass, s.inertia, solids, shells);
+  if (model.output.matsum_dt > 0.0)
+    block_masses(model, view, solids, shells, solid_mass, shell_mass);
   res.physical_mass = mass.physical;
   res.added_mass = mass.added;
   inv_mass.assign(n, 0.0);
@@ -790,6 +796,48 @@ double Simulation::State::kinetic() {
          rigid_bodies->kinetic_energy();
 }
 
+// The books of every part (matsum.csv): its blocks' stress work and hourglass energy, the
+// kinetic energy and momentum of its share of the nodal masses at t_{n+1}, or its rigid body's.
+std::vector<PartEnergies> Simulation::State::part_energies() {
+  sync();
+  std::vector<PartEnergies> parts(model.parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    parts[p].part = model.parts[p].id;
+  const auto add_block = [&](core::Index part, const std::array<double, 2>& books,
+                             const BlockMass& m) {
+    PartEnergies& pe = parts[static_cast<std::size_t>(part)];
+    pe.internal += books[0];
+    pe.hourglass += books[1];
+    for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(m.nodes[k]);
+      pe.kinetic +=
+          0.5 * (m.mass[k] * (s.vnx[i] * s.vnx[i] + s.vny[i] * s.vny[i] + s.vnz[i] * s.vnz[i]) +
+                 m.inertia[k] * (s.wnx[i] * s.wnx[i] + s.wny[i] * s.wny[i] + s.wnz[i] * s.wnz[i]));
+      pe.momentum[0] += m.mass[k] * s.vnx[i];
+      pe.momentum[1] += m.mass[k] * s.vny[i];
+      pe.momentum[2] += m.mass[k] * s.vnz[i];
+    }
+  };
+  for (std::size_t b = 0; b < model.solid_blocks.size(); ++b)
+    add_block(model.solid_blocks[b].part, solid_books[b], solid_mass[b]);
+  for (std::size_t b = 0; b < model.shell_blocks.size(); ++b)
+    add_block(model.shell_blocks[b].part, shell_books[b], shell_mass[b]);
+  for (const rigid::RigidBodies::BodyReport& r : rigid_bodies->report()) {
+    for (PartEnergies& pe : parts) {
+      if (pe.part != r.part_id)
+        continue;
+      pe.rigid = true;
+      double e = 0.0;
+      for (std::size_t d = 0; d < 3; ++d) {
+        pe.momentum[d] = r.mass * r.velocity[d];
+        e += r.mass * r.velocity[d] * r.velocity[d] + r.omega[d] * r.angular_momentum[d];
+      }
+      pe.kinetic = 0.5 * e;
+    }
+  }
+  return parts;
+}
+
 const Energies& Simulation::State::energies() {
   en.time = t;
   en.dt = dt;
@@ -914,6 +962,21 @@ void Simulation::State::write_outputs(bool last) {
     sink.contact_forces(t, contact->report());
     while (next_rcforc <= t + eps_t)
       next_rcforc += out.rcforc_dt;
+  }
+  if (out.spcforc_dt > 0.0 && (t + eps_t >= next_spcforc || last)) {
+    sink.constraint_forces(snapshot());
+    while (next_spcforc <= t + eps_t)
+      next_spcforc += out.spcforc_dt;
+  }
+  if (contact && out.sleout_dt > 0.0 && (t + eps_t >= next_sleout || last)) {
+    sink.interface_energies(t, contact->report());
+    while (next_sleout <= t + eps_t)
+      next_sleout += out.sleout_dt;
+  }
+  if (out.matsum_dt > 0.0 && (t + eps_t >= next_matsum || last)) {
+    sink.part_energies(t, part_energies());
+    while (next_matsum <= t + eps_t)
+      next_matsum += out.matsum_dt;
   }
 }
 
@@ -1174,6 +1237,9 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.value("nodout", next_nodout);
     a.value("rcforc", next_rcforc);
     a.value("bndout", next_bndout);
+    a.value("spcforc", next_spcforc);
+    a.value("sleout", next_sleout);
+    a.value("matsum", next_matsum);
     a.value("tprint", next_tprint);
     a.value("heat", next_heat);
     a.value("heat_written_at", heat_written_at);

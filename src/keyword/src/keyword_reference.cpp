@@ -111,6 +111,9 @@ std::string keyword_reference_markdown() {
       "an exponent letter: `1.00000+4` (= 1e4), `1.0-3` (= 1e-3). Integers are digits with an "
       "optional sign.\n"
       "- Long format (`*KEYWORD LONG=Y`, a `+` after a keyword name) is not supported.\n"
+      "- An output request plyform does not write (any `*DATABASE_` keyword or option not "
+      "listed here) is read and passed over with a warning that names it; it is never an "
+      "error.\n"
       "- Types: I integer, R real, A text. Ranges are inclusive.\n\n";
   for (const KeywordSpec& spec : keyword_registry()) {
     out += keyword_section(spec);

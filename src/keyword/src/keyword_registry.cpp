@@ -82,6 +82,12 @@ KeywordSpec database_glstat_keyword();
 KeywordSpec database_nodout_keyword();
 KeywordSpec database_rcforc_keyword();
 KeywordSpec database_bndout_keyword();
+KeywordSpec database_spcforc_keyword();
+KeywordSpec database_sleout_keyword();
+KeywordSpec database_matsum_keyword();
+KeywordSpec control_accuracy_keyword();
+KeywordSpec control_output_keyword();
+KeywordSpec control_rigid_keyword();
 KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
 
@@ -149,6 +155,9 @@ std::span<const KeywordSpec> keyword_registry() {
       control_termination_keyword(),
       control_timestep_keyword(),
       control_energy_keyword(),
+      control_accuracy_keyword(),
+      control_output_keyword(),
+      control_rigid_keyword(),
       control_hourglass_keyword(),
       control_shell_keyword(),
       control_contact_keyword(),
@@ -162,6 +171,9 @@ std::span<const KeywordSpec> keyword_registry() {
       database_nodout_keyword(),
       database_rcforc_keyword(),
       database_bndout_keyword(),
+      database_spcforc_keyword(),
+      database_sleout_keyword(),
+      database_matsum_keyword(),
       database_tprint_keyword(),
       database_history_node_keyword(),
   };

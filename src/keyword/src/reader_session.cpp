@@ -117,6 +117,18 @@ bool ReaderSession::read_block(const Block& block, const std::string& file,
     return false;
   }
   const KeywordLookup found = find_keyword(keyword.name);
+  // An output request plyform does not write changes no result: it is read (its cards are
+  // passed over) and named in a warning, never an error, so that a deck written for LS-DYNA
+  // runs with the outputs plyform has.
+  const bool output_request = keyword.name.starts_with("DATABASE_");
+  if (output_request && (found.spec == nullptr || !found.option_supported)) {
+    report_warning({{file, keyword.line},
+                    keyword.display(),
+                    "",
+                    "output request not written by plyform (read and passed over; the outputs "
+                    "plyform writes are in docs/keywords.md)"});
+    return false;
+  }
   if (found.spec == nullptr) {
     error("unsupported keyword (not in the keywords plyform reads, docs/keywords.md)");
     return false;

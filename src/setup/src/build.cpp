@@ -412,6 +412,12 @@ struct Builder {
         m.output.rcforc_dt = a.dt;
       if (a.name == "BNDOUT")
         m.output.bndout_dt = a.dt;
+      if (a.name == "SPCFORC")
+        m.output.spcforc_dt = a.dt;
+      if (a.name == "SLEOUT")
+        m.output.sleout_dt = a.dt;
+      if (a.name == "MATSUM")
+        m.output.matsum_dt = a.dt;
     }
     for (const model::DatabaseHistoryNodeDesc& h : d.history_nodes) {
       for (int id : h.node_ids)

@@ -4,7 +4,8 @@
     check_run.py vtk      PLYFORM DECK OUTDIR
     check_run.py threads  PLYFORM DECK OUTDIR
     check_run.py unstable PLYFORM DECK OUTDIR REGEX
-    check_run.py bndout   PLYFORM DECK OUTDIR
+    check_run.py bndout   PLYFORM DECK OUTDIR (also spcforc.csv and matsum.csv)
+    check_run.py sleout   PLYFORM DECK OUTDIR
 
 vtk       runs DECK; VTK's own reader (python3-vtk9 of Debian) reads every results_NNNN.vtu
           listed in results.pvd; the .pvd lists the states in increasing time, one file per
@@ -12,6 +13,11 @@ vtk       runs DECK; VTK's own reader (python3-vtk9 of Debian) reads every resul
           displacement; the displacement and velocity of every history node equal nodout.csv's
           at the same time (the deck writes states and nodout on one interval).
 threads   runs DECK with --threads 1 and --threads 2: nodout.csv and glstat.csv byte-identical.
+sleout    runs DECK (a plate thrown onto a rigid plate with friction): sleout.csv has one row
+          per interface and output; its energy is the interface's work of interface_energy.csv
+          and the interfaces' sum is glstat's contact energy at the same time (the same books,
+          split: a consistency check); friction is interface_energy's, positive, below the
+          energy, and the books close (glstat ratio within 1e-3).
 unstable  runs DECK, which goes unstable: exit code non-zero, stderr matches REGEX (names the
           element or node and the time), the .pvd is valid XML whose last state is at the
           failure time, every listed .vtu is readable (by VTK when installed), and summary.json
@@ -206,6 +212,43 @@ def mode_unstable(plyform, deck, outdir, pattern):
     return 0
 
 
+def mode_sleout(plyform, deck, outdir):
+    p = run_plyform(plyform, deck, outdir)
+    if not check(p.returncode == 0, f"plyform run exit {p.returncode}: {p.stderr}"):
+        return 1
+    rows = {}
+    for name in ("sleout.csv", "interface_energy.csv", "glstat.csv"):
+        path = os.path.join(outdir, name)
+        if not check(os.path.exists(path), f"{name} not written"):
+            return 1
+        with open(path) as f:
+            rows[name] = list(csv.DictReader(f))
+    sle = rows["sleout.csv"]
+    check(list(sle[0].keys()) == ["time", "interface", "energy", "friction"],
+          f"columns {list(sle[0])}")
+    books = {(r["time"], r["interface"]): r for r in rows["interface_energy.csv"]}
+    glstat = {float(r["time"]): r for r in rows["glstat.csv"]}
+    for r in sle:
+        b = books.get((r["time"], r["interface"]))
+        if not check(b is not None, f"no interface_energy row for {r}"):
+            continue
+        check(float(r["energy"]) == float(b["work"]), f"energy {r} against work {b['work']}")
+        check(float(r["friction"]) == float(b["friction"]), f"friction {r} against {b}")
+        g = glstat.get(float(r["time"]))
+        if check(g is not None, f"no glstat row at {r['time']}"):
+            contact = float(g["contact"])
+            check(abs(float(r["energy"]) - contact) <= 1e-12 * max(abs(contact), 1.0),
+                  f"sleout energy {r['energy']} against glstat contact {contact}")
+    last = sle[-1]
+    energy, friction = float(last["energy"]), float(last["friction"])
+    check(0.0 < friction < energy, f"friction {friction} against the interface energy {energy}")
+    ratio = float(rows["glstat.csv"][-1]["energy_ratio"])
+    check(abs(ratio - 1.0) < 1e-3, f"energy ratio {ratio}")
+    print(f"check_run.py sleout: {len(sle)} rows; at the end energy {energy:.6g} mJ, of it "
+          f"friction {friction:.6g} mJ; energy ratio {ratio:.6f}")
+    return 0
+
+
 def mode_bndout(plyform, deck, outdir):
     """A block of Poisson's ratio 0 (4 mm long, 2 x 2 mm section), x = 0 held, x = 4 pulled by
     0.01 mm over 60 axial periods: the force the prescribed motion applies is the static
@@ -236,6 +279,61 @@ def mode_bndout(plyform, deck, outdir):
                   for r in at), "force on directions that are not prescribed")
     print(f"check_run.py bndout: {len(along)} outputs along the ramp, largest departure "
           f"from E A u / L {100 * worst:.2f} %")
+    check("*DATABASE_SECFORC" in p.stderr and "not written" in p.stderr,
+          f"no warning for the output request plyform does not write: {p.stderr}")
+
+    # spcforc.csv: the 9 held nodes at x = 0 take the pull back: their x reactions sum to
+    # -E A u / L (static equilibrium of the block), and the block is at rest laterally.
+    path = os.path.join(outdir, "spcforc.csv")
+    if not check(os.path.exists(path), "spcforc.csv not written"):
+        return 1
+    with open(path) as f:
+        spc = list(csv.DictReader(f))
+    check(list(spc[0].keys()) == ["time", "node", "fx", "fy", "fz"], f"columns {list(spc[0])}")
+    worst_spc = 0.0
+    for t in along:
+        at = [r for r in spc if float(r["time"]) == t]
+        check(len(at) == 9, f"{len(at)} held nodes at t = {t}, expected 9")
+        expected = 210000.0 * 4.0 * (0.01 * t / end) / 4.0
+        reaction = sum(float(r["fx"]) for r in at)
+        worst_spc = max(worst_spc, abs(-reaction / expected - 1.0))
+        check(abs(reaction + expected) <= 0.01 * expected,
+              f"held end's reaction {reaction:.6g} N at t = {t:.4g}, expected {-expected:.6g} N")
+
+    # matsum.csv: one part, whose books are glstat's (the same numbers: one part takes all the
+    # stress work, hourglass energy and nodal mass), and whose stored energy is the static
+    # E A u^2 / (2 L) along the ramp within 2 % (the force is within 1 %, the energy goes as
+    # its square).
+    path = os.path.join(outdir, "matsum.csv")
+    if not check(os.path.exists(path), "matsum.csv not written"):
+        return 1
+    with open(path) as f:
+        ms = list(csv.DictReader(f))
+    with open(os.path.join(outdir, "glstat.csv")) as f:
+        gl = {float(r["time"]): r for r in csv.DictReader(f)}
+    check(list(ms[0].keys()) == ["time", "part", "rigid", "internal", "kinetic", "hourglass",
+                                 "momentum_x", "momentum_y", "momentum_z"],
+          f"columns {list(ms[0])}")
+    worst_ms = 0.0
+    for r in ms:
+        t = float(r["time"])
+        check(r["part"] == "1" and r["rigid"] == "0", f"row {r}")
+        g = gl.get(t)
+        if not check(g is not None, f"no glstat row at t = {t}"):
+            continue
+        for key in ("internal", "kinetic", "hourglass"):
+            a, b = float(r[key]), float(g[key])
+            check(abs(a - b) <= 1e-9 * max(abs(b), 1e-12),
+                  f"matsum {key} {a:.9g} against glstat {b:.9g} at t = {t}")
+        if t in along:
+            u = 0.01 * t / end
+            expected = 210000.0 * 4.0 * u * u / (2.0 * 4.0)
+            worst_ms = max(worst_ms, abs(float(r["internal"]) / expected - 1.0))
+            check(abs(float(r["internal"]) - expected) <= 0.02 * expected,
+                  f"stored energy {float(r['internal']):.6g} mJ at t = {t:.4g} against "
+                  f"E A u^2 / 2L = {expected:.6g} mJ")
+    print(f"check_run.py bndout: spcforc reaction within {100 * worst_spc:.2f} % of -E A u / L, "
+          f"matsum internal within {100 * worst_ms:.2f} % of E A u^2 / 2L")
     return 0
 
 
@@ -250,6 +348,8 @@ def main(argv):
         status = mode_threads(plyform, deck, outdir)
     elif mode == "bndout":
         status = mode_bndout(plyform, deck, outdir)
+    elif mode == "sleout":
+        status = mode_sleout(plyform, deck, outdir)
     elif mode == "unstable" and len(argv) == 5:
         status = mode_unstable(plyform, deck, outdir, argv[4])
     else:

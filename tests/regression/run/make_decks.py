@@ -11,7 +11,12 @@ block_threads.k  the same load on 16 x 6 x 6 = 576 hex8 (more than one 256-eleme
 unstable_tssfac.k   block_pull.k with TSSFAC 2.0: the step exceeds the stable limit.
 invert_element.k    block_pull.k pushed 8 mm into itself: elements turn inside out.
 block_bndout.k   block_pull.k with Poisson's ratio 0, pulled over 60 axial periods, with
-                 *DATABASE_BNDOUT (the bndout.csv test).
+                 *DATABASE_BNDOUT, _SPCFORC and _MATSUM (the bndout.csv, spcforc.csv and
+                 matsum.csv test) and *DATABASE_SECFORC, an output plyform does not write
+                 (read with a warning).
+plate_sleout.k   an elastic shell plate thrown at an angle onto a held rigid plate (Coulomb
+                 friction 0.3), with *DATABASE_SLEOUT, _RCFORC and _GLSTAT (the sleout.csv
+                 test).
 bad_*.k          block_pull.k with one error each (the deck-error tests).
 """
 
@@ -83,7 +88,9 @@ def block_deck(nx, ny, nz, title, end_time=1.0e-5, interval=1.0e-6, tssfac="0.9"
         "         2         1         2         1       1.0",
     ]
     if bndout:
-        lines += ["*DATABASE_BNDOUT", f"{interval:10.3e}"]
+        lines += ["*DATABASE_BNDOUT", f"{interval:10.3e}", "*DATABASE_SPCFORC",
+                  f"{interval:10.3e}", "*DATABASE_MATSUM", f"{interval:10.3e}",
+                  "*DATABASE_SECFORC", f"{interval:10.3e}"]
     if initial_velocity is not None:
         lines += ["*INITIAL_VELOCITY_GENERATION",
                   "$       ID      STYP     OMEGA        VX        VY        VZ",
@@ -107,6 +114,34 @@ def block_deck(nx, ny, nz, title, end_time=1.0e-5, interval=1.0e-6, tssfac="0.9"
     return "\n".join(lines) + "\n"
 
 
+def sleout_deck():
+    n = 4  # elements along each side of the 8 mm plate; the rigid plate is 12 mm
+    lines = ["*KEYWORD", "*TITLE", "Plate thrown onto a rigid plate, sleout.csv",
+             "$ Units: mm, t, s, MPa, N. Written by tests/regression/run/make_decks.py.",
+             "*CONTROL_TERMINATION", "4.0e-4", "*DATABASE_GLSTAT", "2.0e-5",
+             "*DATABASE_RCFORC", "2.0e-5", "*DATABASE_SLEOUT", "2.0e-5",
+             "*PART", "plate", "1,1,1", "*PART", "rigid plate", "2,2,2",
+             "*SECTION_SHELL", "1,2,0.8333,3", "0.5,0.5,0.5,0.5",
+             "*SECTION_SHELL", "2,2,0.8333,2", "1.0,1.0,1.0,1.0",
+             "*MAT_ELASTIC", "1,7.85e-9,210000.0,0.3",
+             "*MAT_RIGID", "2,7.85e-9,210000.0,0.3", "1.0,7,7",
+             "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE", "1,2,3,3", "0.3,0.3,0.0,0.0,20.0", "1.0,1.0",
+             "*INITIAL_VELOCITY_GENERATION", "1,2,0.0,2000.0,0.0,-3000.0", "*NODE"]
+    for j in range(n + 1):
+        for i in range(n + 1):
+            lines.append(f"{1 + i + (n + 1) * j},{2.0 * i},{2.0 * j},1.0")
+    for j in range(2):
+        for i in range(2):
+            lines.append(f"{101 + i + 2 * j},{-2.0 + 12.0 * i},{-2.0 + 12.0 * j},0.0")
+    lines.append("*ELEMENT_SHELL")
+    for j in range(n):
+        for i in range(n):
+            a = 1 + i + (n + 1) * j
+            lines.append(f"{1 + i + n * j},1,{a},{a + 1},{a + n + 2},{a + n + 1}")
+    lines += ["100,2,101,102,104,103", "*END"]
+    return "\n".join(lines) + "\n"
+
+
 def replace_once(text, old, new):
     assert text.count(old) == 1, old
     return text.replace(old, new)
@@ -127,6 +162,7 @@ def main(argv):
                                        pull="-8.0"),
         "block_bndout.k": block_deck(4, 2, 2, "Steel block (Poisson 0) pulled slowly, bndout.csv",
                                      end_time=2.0e-4, interval=2.0e-5, pr="0.0", bndout=True),
+        "plate_sleout.k": sleout_deck(),
         # One error each; the line numbers named by the tests are those of these edits.
         "bad_unknown_keyword.k": replace_once(base, "*SECTION_SOLID\n", "*SECTION_SOLIDD\n"),
         "bad_number.k": replace_once(base, "   7.85e-9  210000.0", "   7.85e-9  210x00.0"),

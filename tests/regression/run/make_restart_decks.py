@@ -6,7 +6,8 @@
 restart_shell.k  the three-layer square cup (examples/square_cup: rigid punch, die and blank
                  holder, friction contacts, cohesive interfaces between the layers), coarse
                  (10 elements along the quarter blank's edge) and drawn 2 mm; a checkpoint
-                 every 1000 cycles.
+                 every 1000 cycles; spcforc.csv, matsum.csv and sleout.csv on glstat's
+                 interval.
 restart_solid.k  decks/block_threads.k (576 elastic hex8, one face clamped, the other pulled,
                  a lateral initial velocity); a checkpoint every 50 cycles.
 restart_thermal.k the same block with computed temperatures (SOLN 2, a thermal step every few
@@ -35,6 +36,20 @@ def with_checkpoints(path, cycles):
         f.write(text)
 
 
+def with_part_outputs(path):
+    """Adds *DATABASE_SPCFORC, _MATSUM and _SLEOUT on the interval of *DATABASE_GLSTAT."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    at = lines.index("*DATABASE_GLSTAT")
+    interval = lines[at + 1]
+    extra = []
+    for name in ("SPCFORC", "MATSUM", "SLEOUT"):
+        extra += [f"*DATABASE_{name}", interval]
+    lines[at + 2:at + 2] = extra
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+
+
 def main(argv):
     if len(argv) != 2:
         print(__doc__, file=sys.stderr)
@@ -46,6 +61,7 @@ def main(argv):
                     "--n", "10", "--depth", "2", "--name", "restart_shell"],
                    check=True, stdout=subprocess.DEVNULL)
     with_checkpoints(os.path.join(out, "restart_shell.k"), 1000)
+    with_part_outputs(os.path.join(out, "restart_shell.k"))
     with open(os.path.join(HERE, "decks", "block_threads.k")) as f:
         solid = f.read()
     with open(os.path.join(out, "restart_solid.k"), "w") as f:

@@ -315,6 +315,39 @@ TEST(DatabaseRcforc, ReadsTheInterval) {
   expect_error("*DATABASE_RCFORC\n1e-3,1,7\n", 2, "*DATABASE_RCFORC", "LCUR", "not supported");
 }
 
+// --- *DATABASE_SPCFORC, _SLEOUT, _MATSUM; output requests plyform does not write
+
+TEST(DatabaseOutputs, SpcforcSleoutMatsumReadTheirIntervals) {
+  const ReadResult r =
+      read_ok("*DATABASE_SPCFORC\n1e-4\n*DATABASE_SLEOUT\n2e-4,3\n*DATABASE_MATSUM\n3e-4\n");
+  ASSERT_EQ(r.model.ascii_outputs.size(), 3u);
+  EXPECT_EQ(r.model.ascii_outputs[0].name, "SPCFORC");
+  EXPECT_DOUBLE_EQ(r.model.ascii_outputs[0].dt, 1e-4);
+  EXPECT_EQ(r.model.ascii_outputs[1].name, "SLEOUT");
+  EXPECT_EQ(r.model.ascii_outputs[1].binary, 3);
+  EXPECT_EQ(r.model.ascii_outputs[2].name, "MATSUM");
+  EXPECT_DOUBLE_EQ(r.model.ascii_outputs[2].dt, 3e-4);
+  expect_error("*DATABASE_MATSUM\n1e-3,1,7\n", 2, "*DATABASE_MATSUM", "LCUR", "not supported");
+}
+
+TEST(DatabaseOutputs, OutputRequestsPlyformDoesNotWriteAreWarnedAboutNotRejected) {
+  // An unknown output keyword, and an option of a known one, with cards of their own.
+  const ReadResult r = read_ok(
+      "*DATABASE_SECFORC\n1e-4\n*DATABASE_EXTENT_BINARY\n0,0,3,1\n0,0,0,0,0\n"
+      "*DATABASE_HISTORY_NODE_SET\n7\n*DATABASE_GLSTAT\n1e-3\n");
+  ASSERT_EQ(r.warnings.size(), 3u);
+  EXPECT_EQ(r.warnings[0].keyword, "*DATABASE_SECFORC");
+  EXPECT_EQ(r.warnings[0].where.line, 1);
+  EXPECT_NE(r.warnings[0].message.find("not written"), std::string::npos);
+  EXPECT_EQ(r.warnings[1].keyword, "*DATABASE_EXTENT_BINARY");
+  EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_NODE_SET");
+  ASSERT_EQ(r.model.ascii_outputs.size(), 1u);  // the cards passed over are not read as others
+  EXPECT_EQ(r.model.ascii_outputs[0].name, "GLSTAT");
+  // Any other keyword plyform does not know stays an error.
+  expect_error("*CONTROL_IMPLICIT_GENERAL\n1\n", 1, "*CONTROL_IMPLICIT_GENERAL", "",
+               "unsupported keyword");
+}
+
 // --- *INITIAL_TEMPERATURE_NODE / _SET
 
 TEST(InitialTemperature, NodesAndSets) {

@@ -141,11 +141,13 @@ TEST_F(RealDecks, MetalformingDeckReadsShellsMaterialsAndRigidTools) {
   EXPECT_EQ(result.model.rigid_motions[0].part_id, 2);
   EXPECT_EQ(result.model.rigid_motions[0].dof, 6);
   EXPECT_DOUBLE_EQ(result.model.rigid_motions[0].scale, -1.0);
-  // What is left: keywords outside the subset, *CONTROL_SHELL's ESORT = 1 (sorting triangles
+  // What is left: keywords outside the subset (*CONTROL_ADAPSTEP, _ADAPTIVE, _BULK_VISCOSITY,
+  // *MAT_037, *INTERFACE_SPRINGBACK_LSDYNA), *CONTROL_SHELL's ESORT = 1 (sorting triangles
   // to a C0 triangle) and *CONTROL_CONTACT's PENOPT = 4 (area-weighted slave stiffness), which
-  // plyform names rather than ignores. The four forming contacts read, with their optional
-  // cards B and C as LS-PrePost writes them (defaults, SNLOG 1, IGAP 1).
-  EXPECT_EQ(result.errors.size(), 11u);
+  // plyform names rather than ignores (*CONTROL_ACCURACY and _OUTPUT now read, *DATABASE_MATSUM
+  // written). The four forming contacts read, with their optional cards B and C as LS-PrePost
+  // writes them (defaults, SNLOG 1, IGAP 1).
+  EXPECT_EQ(result.errors.size(), 7u);
   for (const Diagnostic& error : result.errors) {
     const bool unsupported_keyword = error.message.find("unsupported keyword") != std::string::npos;
     const bool esort = error.keyword == "*CONTROL_SHELL" && error.field == "ESORT";
@@ -160,9 +162,10 @@ TEST_F(RealDecks, MetalformingDeckReadsShellsMaterialsAndRigidTools) {
     EXPECT_DOUBLE_EQ(c.vdc, 20.0);
     EXPECT_EQ(c.bsort, 100);
   }
-  // *DATABASE_RCFORC is read.
-  ASSERT_EQ(result.model.ascii_outputs.size(), 2u);
-  EXPECT_EQ(result.model.ascii_outputs[1].name, "RCFORC");
+  // *DATABASE_GLSTAT, _MATSUM and _RCFORC are read.
+  ASSERT_EQ(result.model.ascii_outputs.size(), 3u);
+  EXPECT_EQ(result.model.ascii_outputs[1].name, "MATSUM");
+  EXPECT_EQ(result.model.ascii_outputs[2].name, "RCFORC");
 }
 
 TEST_F(RealDecks, MissingWindowsIncludeIsLocated) {

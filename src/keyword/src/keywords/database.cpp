@@ -321,6 +321,39 @@ KeywordSpec database_bndout_keyword() {
               "from its constraint: the load it takes to impose the motion)."};
 }
 
+KeywordSpec database_spcforc_keyword() {
+  return {.name = "DATABASE_SPCFORC",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "SPCFORC"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of spcforc.csv: the reaction force of each node held by "
+              "*BOUNDARY_SPC (the force the constraint applies to the node, on its constrained "
+              "translations; rotations' moments are not written)."};
+}
+
+KeywordSpec database_sleout_keyword() {
+  return {.name = "DATABASE_SLEOUT",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "SLEOUT"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of sleout.csv: each contact interface's energy (the work its "
+              "forces took from the model, the contact energy of glstat.csv split by interface) "
+              "and the part of it that friction dissipated."};
+}
+
+KeywordSpec database_matsum_keyword() {
+  return {.name = "DATABASE_MATSUM",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "MATSUM"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of matsum.csv: the energies of each part (internal, kinetic, "
+              "hourglass) and, for rigid parts, their momentum; the parts' sums are glstat.csv's "
+              "books."};
+}
+
 KeywordSpec database_tprint_keyword() {
   return {.name = "DATABASE_TPRINT",
           .options = kNoOptions,

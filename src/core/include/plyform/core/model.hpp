@@ -148,6 +148,9 @@ struct OutputRequests {
   double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
   double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
+  double spcforc_dt = 0.0;           ///< *DATABASE_SPCFORC (0: none): spcforc.csv
+  double sleout_dt = 0.0;            ///< *DATABASE_SLEOUT (0: none): sleout.csv
+  double matsum_dt = 0.0;            ///< *DATABASE_MATSUM (0: none): matsum.csv
   long d3dump_cycles = 0;            ///< *DATABASE_BINARY_D3DUMP CYCL (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
   double tprint_dt = 0.0;            ///< *DATABASE_TPRINT (0: none): tprint.csv, heat.csv

@@ -3,6 +3,7 @@
 // deformation, boundary conditions, energies, output on schedule. It sees only the runtime
 // model (flat arrays, local indices) and reports through an OutputSink.
 
+#include <array>
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
@@ -35,6 +36,18 @@ struct Energies {
   double ratio = 1.0;          ///< total / (initial total + external work)
 };
 
+/// One part's books at an output time (matsum.csv): the stress work and hourglass energy of
+/// its elements since t = 0, the kinetic energy and momentum of its share of the nodal masses
+/// (the nodes a part shares with another split by their elements' mass), or of its rigid body.
+struct PartEnergies {
+  core::GlobalId part = 0;
+  bool rigid = false;
+  double internal = 0.0;
+  double kinetic = 0.0;
+  double hourglass = 0.0;
+  std::array<double, 3> momentum{};
+};
+
 /// What an output writer sees at an output time.
 struct Snapshot {
   double time = 0.0;
@@ -62,6 +75,14 @@ class OutputSink {
   /// At the bndout interval: the reactions of the prescribed-motion nodes are in
   /// `s.nodes->rx, ry, rz` (the force the constraint applies to each node).
   virtual void boundary_forces(const Snapshot& /*s*/) {}
+  /// At the spcforc interval: the reactions of the *BOUNDARY_SPC nodes are in
+  /// `s.nodes->rx, ry, rz`.
+  virtual void constraint_forces(const Snapshot& /*s*/) {}
+  /// At the sleout interval when the model has contacts: each interface's energy books.
+  virtual void interface_energies(double /*time*/,
+                                  const std::vector<contact::InterfaceReport>& /*interfaces*/) {}
+  /// At the matsum interval: each part's books, in the order of the model's parts.
+  virtual void part_energies(double /*time*/, const std::vector<PartEnergies>& /*parts*/) {}
   /// When temperatures are computed, at the tprint interval (the glstat interval without
   /// *DATABASE_TPRINT) and at the end: the heat books since t = 0.
   virtual void heat(double /*time*/, const thermal::HeatLedger& /*ledger*/) {}

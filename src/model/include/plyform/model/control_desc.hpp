@@ -40,6 +40,18 @@ struct ControlEnergyDesc {
   SourceLocation where;
 };
 
+/// *CONTROL_ACCURACY: what it asks of the stress update and the shells' frame. plyform's
+/// stress update is always objective (OSU is met whatever it says); INN is kept for
+/// `plyform check`, which says what it means for plyform's shells.
+struct ControlAccuracyDesc {
+  int osu = 0;       ///< OSU: second-order objective stress update (0 off, 1 on)
+  int inn = 1;       ///< INN: invariant node numbering (1 off, 2 shells, 3 solids, 4 both)
+  int pidosu = 0;    ///< PIDOSU: part set of OSU
+  int iacc = 0;      ///< IACC: implicit accuracy options
+  double exacc = 0;  ///< EXACC: explicit accuracy parameter (0 only)
+  SourceLocation where;
+};
+
 /// *CONTROL_HOURGLASS: the default hourglass control.
 struct ControlHourglassDesc {
   int ihq = 1;      ///< IHQ: default hourglass type

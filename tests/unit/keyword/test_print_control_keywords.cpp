@@ -1,0 +1,58 @@
+// *CONTROL_ACCURACY, *CONTROL_OUTPUT and *CONTROL_RIGID as LS-PrePost writes them: every card
+// read, the values kept, and the fields that would ask plyform for what it does not do
+// rejected by name with their line.
+#include <gtest/gtest.h>
+
+#include "deck_text_checks.hpp"
+#include "plyform/keyword/read_deck.hpp"
+
+namespace plyform::keyword {
+namespace {
+
+using namespace test;  // read_ok, expect_error
+
+TEST(ControlAccuracy, ReadsOsuAndInnWithTheirDefaults) {
+  const ReadResult r = read_ok(
+      "*CONTROL_ACCURACY\n$#     osu       inn    pidosu      iacc\n"
+      "         1         4         0         0       0.0\n");
+  ASSERT_TRUE(r.model.accuracy.has_value());
+  EXPECT_EQ(r.model.accuracy->osu, 1);
+  EXPECT_EQ(r.model.accuracy->inn, 4);
+  EXPECT_EQ(r.model.accuracy->where.line, 3);
+  const ReadResult blank = read_ok("*CONTROL_ACCURACY\n\n");
+  EXPECT_EQ(blank.model.accuracy->osu, 0);
+  EXPECT_EQ(blank.model.accuracy->inn, 1);
+  EXPECT_EQ(read_ok("*CONTROL_ACCURACY\n0,0\n").model.accuracy->inn, 1);  // 0: the default
+  expect_error("*CONTROL_ACCURACY\n0,5\n", 2, "*CONTROL_ACCURACY", "INN", "must be one of");
+  expect_error("*CONTROL_ACCURACY\n2\n", 2, "*CONTROL_ACCURACY", "OSU", "must be one of");
+  expect_error("*CONTROL_ACCURACY\n0,1,0,0,0.5\n", 2, "*CONTROL_ACCURACY", "EXACC", "range");
+}
+
+TEST(ControlOutput, ReadsTheFourCardsLsPrePostWrites) {
+  const ReadResult r = read_ok(
+      "*CONTROL_OUTPUT\n"
+      "         1         3         0         1       0.0         0       100         0\n"
+      "         0         0         2        50         0       0.0         0         0\n"
+      "         2         0         1         0         0         0      10.0\n"
+      "         0         0         0         0         0         0         0         0\n"
+      "*CONTROL_OUTPUT\n1,3\n");
+  EXPECT_TRUE(r.ok());
+  expect_error("*CONTROL_OUTPUT\n1\n0,1\n", 3, "*CONTROL_OUTPUT", "IERODE", "erode");
+  expect_error("*CONTROL_OUTPUT\n\n\n\n\n1\n", 6, "*CONTROL_OUTPUT", "", "cards 5");
+}
+
+TEST(ControlRigid, MetalFormingUpdateAcceptedSelectiveMassScalingRejected) {
+  const ReadResult r = read_ok(
+      "*CONTROL_RIGID\n"
+      "$#     lmf      jntf    orthmd     partm    sparse    metalf    plotel     rbsms\n"
+      "         0         0         0         0         0         1         0         0\n"
+      "$#  norbic   gjadstf   gjadvsc    tjastf   tjadvsc   rcvlr2d\n"
+      "         0       0.0       0.0       0.0       0.0         0\n");
+  EXPECT_TRUE(r.ok());
+  expect_error("*CONTROL_RIGID\n0,0,0,0,0,2\n", 2, "*CONTROL_RIGID", "METALF", "must be one of");
+  expect_error("*CONTROL_RIGID\n0,0,0,0,0,0,0,1\n", 2, "*CONTROL_RIGID", "RBSMS",
+               "selective mass scaling");
+}
+
+}  // namespace
+}  // namespace plyform::keyword
