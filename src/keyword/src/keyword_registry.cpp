@@ -37,6 +37,10 @@ KeywordSpec mat_rigid_keyword();
 KeywordSpec mat_020_keyword();
 KeywordSpec mat_piecewise_linear_plasticity_keyword();
 KeywordSpec mat_024_keyword();
+KeywordSpec mat_plastic_kinematic_keyword();
+KeywordSpec mat_003_keyword();
+KeywordSpec mat_transversely_anisotropic_keyword();
+KeywordSpec mat_037_keyword();
 KeywordSpec mat_mooney_rivlin_keyword();
 KeywordSpec mat_027_keyword();
 KeywordSpec mat_add_thermal_expansion_keyword();
@@ -83,11 +87,11 @@ KeywordSpec database_nodout_keyword();
 KeywordSpec database_rcforc_keyword();
 KeywordSpec database_bndout_keyword();
 KeywordSpec database_spcforc_keyword();
-KeywordSpec database_sleout_keyword();
-KeywordSpec database_matsum_keyword();
 KeywordSpec control_accuracy_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
+KeywordSpec database_sleout_keyword();
+KeywordSpec database_matsum_keyword();
 KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
 
@@ -123,6 +127,10 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_020_keyword(),
       mat_piecewise_linear_plasticity_keyword(),
       mat_024_keyword(),
+      mat_plastic_kinematic_keyword(),
+      mat_003_keyword(),
+      mat_transversely_anisotropic_keyword(),
+      mat_037_keyword(),
       mat_mooney_rivlin_keyword(),
       mat_027_keyword(),
       mat_add_thermal_expansion_keyword(),

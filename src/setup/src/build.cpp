@@ -161,7 +161,7 @@ struct Builder {
               "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
                   " is not a law for solid elements (use *MAT_ELASTIC, *MAT_MOONEY-RIVLIN_RUBBER, "
                   "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
-                  "*MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
+                  "*MAT_PLASTIC_KINEMATIC, *MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
           continue;
         }
         core::SolidBlock b;
@@ -185,8 +185,19 @@ struct Builder {
                 "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
                     " is not a law for shells (use *MAT_ELASTIC, *MAT_ORTHOTROPIC_ELASTIC, "
                     "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
+                    "*MAT_PLASTIC_KINEMATIC, *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC, "
                     "*MAT_ELASTIC_PLASTIC_THERMAL, *MAT_REINFORCED_THERMOPLASTIC or "
                     "*MAT_RIGID)");
+          continue;
+        }
+        // The shell element passes the laws its strain increments, not its step: the strain
+        // rate of the Cowper-Symonds factor is not known in a shell yet.
+        if (const auto* pk = std::get_if<core::PlasticKinematic>(&law);
+            pk != nullptr && pk->src > 0.0 && pk->srp > 0.0) {
+          error(p.where, "*PART", "MID",
+                "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
+                    " (*MAT_PLASTIC_KINEMATIC) has strain rate effects (SRC, SRP) on shells, "
+                    "which are not supported yet (they are on solids); set SRC and SRP to 0");
           continue;
         }
         if (sec.nip < 1 || sec.nip > 5) {

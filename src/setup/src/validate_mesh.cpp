@@ -205,6 +205,9 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   add_materials(model.mooney_rivlin_materials, "*MAT_MOONEY-RIVLIN_RUBBER");
   add_materials(model.elastic_plastic_thermal_materials, "*MAT_ELASTIC_PLASTIC_THERMAL");
   add_materials(model.reinforced_thermoplastic_materials, "*MAT_REINFORCED_THERMOPLASTIC");
+  add_materials(model.plastic_kinematic_materials, "*MAT_PLASTIC_KINEMATIC");
+  add_materials(model.transversely_anisotropic_materials,
+                "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC");
   add_in_deck_order(materials, std::move(material_definitions), model, "MID", errors);
   IdTable rigid_materials("rigid material", "*MAT_RIGID");
   for (const model::MatRigidDesc& m : model.rigid_materials) {
@@ -305,6 +308,31 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
                         cat("material ", m.id, ": curve ", m.lcss,
                             " is not defined (no *DEFINE_CURVE with this id; tables of curves, "
                             "*DEFINE_TABLE, are not supported yet)")});
+    }
+  }
+
+  // The return of *MAT_037 brackets its plastic multiplier with a yield stress that is
+  // positive and does not soften, as the hardening curve of a sheet metal is.
+  for (const model::MatTransverselyAnisotropicDesc& m : model.transversely_anisotropic_materials) {
+    if (m.hlcid == 0)
+      continue;
+    const auto c = std::find_if(model.curves.begin(), model.curves.end(),
+                                [&](const model::CurveDesc& x) { return x.id == m.hlcid; });
+    if (c == model.curves.end()) {
+      errors.push_back({m.where, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "HLCID",
+                        cat("material ", m.id, ": curve ", m.hlcid,
+                            " is not defined (no *DEFINE_CURVE with this id)")});
+      continue;
+    }
+    const std::vector<model::CurvePoint> points = model::effective_points(*c);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!(points[i].y > 0.0) || (i > 0 && points[i].y < points[i - 1].y)) {
+        errors.push_back(
+            {m.where, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "HLCID",
+             cat("material ", m.id, ": the yield stresses of curve ", m.hlcid,
+                 " must be > 0 and must not decrease (point ", i + 1, " is ", points[i].y, ")")});
+        break;
+      }
     }
   }
 

@@ -152,7 +152,10 @@ TEST_F(RealDecks, MetalformingDeckReadsShellsMaterialsAndRigidTools) {
     const bool unsupported_keyword = error.message.find("unsupported keyword") != std::string::npos;
     const bool esort = error.keyword == "*CONTROL_SHELL" && error.field == "ESORT";
     const bool penopt = error.keyword == "*CONTROL_CONTACT" && error.field == "PENOPT";
-    EXPECT_TRUE(unsupported_keyword || esort || penopt) << error.to_string();
+    // The sheet's *MAT_037 has R = -1.593 (R from a curve against plastic strain).
+    const bool r_curve =
+        error.keyword == "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC" && error.field == "R";
+    EXPECT_TRUE(unsupported_keyword || esort || penopt || r_curve) << error.to_string();
   }
   ASSERT_EQ(result.model.contacts.size(), 4u);
   for (const model::ContactDesc& c : result.model.contacts) {

@@ -27,6 +27,9 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
       {core::MooneyRivlinMaterial{}, "*MAT_MOONEY-RIVLIN_RUBBER", 27, true, false, 0},
       {core::ElasticPlasticThermal{}, "*MAT_ELASTIC_PLASTIC_THERMAL", 4, true, true, 0},
       {core::ReinforcedThermoplastic{}, "*MAT_REINFORCED_THERMOPLASTIC", 249, false, true, 14},
+      {core::PlasticKinematic{}, "*MAT_PLASTIC_KINEMATIC", 3, true, true, 6},
+      {core::TransverselyAnisotropicPlastic{}, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", 37,
+       false, true, 0},
   };
   std::set<std::string> keywords;
   for (const auto& c : cases) {

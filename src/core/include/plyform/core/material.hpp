@@ -132,9 +132,42 @@ struct ReinforcedThermoplastic {
   double angle = 0.0;  ///< MANGL, radians (AOPT 0 and 3)
 };
 
+/// *MAT_PLASTIC_KINEMATIC (003): J2 plasticity with bilinear mixed hardening. The plastic
+/// modulus E_p = E ETAN / (E - ETAN) is split by BETA: the yield stress (the radius of the
+/// yield surface) is k (SIGY + BETA E_p eps_p), the back stress (its centre) moves by
+/// (1 - BETA) 2/3 E_p d eps^p; BETA 0 is kinematic, 1 isotropic hardening. k is the
+/// Cowper-Symonds factor 1 + (eps_rate / SRC)^(1 / SRP) (1 when SRC or SRP is 0), eps_rate =
+/// sqrt(D : D) of the total rate of deformation. Derivation: docs/materials.md.
+struct PlasticKinematic {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  double sigy = 0.0;
+  double etan = 0.0;
+  double beta = 0.0;
+  double src = 0.0;  ///< Cowper-Symonds C, 1/time (0: no rate effect)
+  double srp = 0.0;  ///< Cowper-Symonds P (0: no rate effect)
+};
+
+/// *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (037), shells: isotropic elasticity, Hill's
+/// 1948 yield function with normal anisotropy r (plane stress, in-plane isotropic):
+/// sigma_eq^2 = sxx^2 + syy^2 - 2r/(1 + r) sxx syy + 2(1 + 2r)/(1 + r) sxy^2, associated flow,
+/// isotropic hardening from `curve` when it has points, else SIGY + E_p eps_p with
+/// E_p = E ETAN / (E - ETAN). r = 1 is von Mises. Derivation: docs/materials.md.
+struct TransverselyAnisotropicPlastic {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  double sigy = 0.0;
+  double etan = 0.0;
+  double r = 1.0;
+  HardeningCurve curve;
+};
+
 using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
                               PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial,
-                              ElasticPlasticThermal, ReinforcedThermoplastic>;
+                              ElasticPlasticThermal, ReinforcedThermoplastic, PlasticKinematic,
+                              TransverselyAnisotropicPlastic>;
 
 // The law of each member (its kernel, moduli and name): material/law_registry.hpp.
 

@@ -15,9 +15,11 @@
 #include "plyform/material/laws/mooney_rivlin.hpp"
 #include "plyform/material/laws/orthotropic_elastic.hpp"
 #include "plyform/material/laws/piecewise_linear_plasticity.hpp"
+#include "plyform/material/laws/plastic_kinematic.hpp"
 #include "plyform/material/laws/power_law_plasticity.hpp"
 #include "plyform/material/laws/reinforced_thermoplastic.hpp"
 #include "plyform/material/laws/rigid.hpp"
+#include "plyform/material/laws/transversely_anisotropic_plastic.hpp"
 
 namespace plyform::material {
 
@@ -25,9 +27,10 @@ template <class... L>
 struct LawList {};
 
 /// The registry.
-using Laws = LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
-                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw,
-                     ReinforcedThermoplasticLaw>;
+using Laws =
+    LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
+            PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw,
+            ReinforcedThermoplasticLaw, PlasticKinematicLaw, TransverselyAnisotropicPlasticLaw>;
 
 namespace detail {
 template <class P, class List>

@@ -23,6 +23,7 @@
 #include "plyform/model/mat_plasticity_desc.hpp"
 #include "plyform/model/mat_reinforced_thermoplastic_desc.hpp"
 #include "plyform/model/mat_rigid_desc.hpp"
+#include "plyform/model/mat_sheet_metal_desc.hpp"
 #include "plyform/model/mat_thermal_plasticity_desc.hpp"
 #include "plyform/model/node_desc.hpp"
 #include "plyform/model/part_desc.hpp"
@@ -61,6 +62,8 @@ struct ModelDesc {
   std::vector<MatMooneyRivlinDesc> mooney_rivlin_materials;
   std::vector<MatElasticPlasticThermalDesc> elastic_plastic_thermal_materials;
   std::vector<MatReinforcedThermoplasticDesc> reinforced_thermoplastic_materials;
+  std::vector<MatPlasticKinematicDesc> plastic_kinematic_materials;
+  std::vector<MatTransverselyAnisotropicDesc> transversely_anisotropic_materials;
   std::vector<MatAddThermalExpansionDesc> thermal_expansions;
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;
