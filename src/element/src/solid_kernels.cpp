@@ -199,6 +199,24 @@ using NodeLanes = double[8][kLanes];
 // out the hourglass modes only. Length scales from the gradient (exact for a cube):
 // V^(2/3) ~ V sqrt(2 sum|b|^2 / 3) for the viscous form, V^(1/3) ~ (2/3) V sum|b|^2 for the
 // stiffness form. `scale` is QM rho c (viscous) or QM (K + 4/3 G) (stiffness).
+// Bulk viscosity (LS-DYNA's form): in compression, tr D < 0, the pressure
+// q = rho l |tr D| (Q1 l |tr D| + Q2 c) = rho l Q |tr D| with l = V^(1/3), the element's
+// viscous velocity Q = Q1 l |tr D| + Q2 c, and the stable step L / (Q + sqrt(Q^2 + c^2)) (L the
+// step's characteristic length). Nothing in expansion. It smears a shock over a few elements
+// and damps the ringing behind it; its work, q |tr D| V dt, is booked as internal energy.
+struct BulkQ {
+  double q = 0.0;   // pressure [stress]
+  double qv = 0.0;  // viscous velocity Q [length/time]
+};
+inline BulkQ bulk_viscosity(const core::BulkViscosity& b, double rho, double c, double volume,
+                            double trace) {
+  if (!(trace < 0.0) || (b.q1 == 0.0 && b.q2 == 0.0))
+    return {};
+  const double l = std::cbrt(volume), rate = -trace;
+  const double qv = b.q1 * l * rate + b.q2 * c;
+  return {rho * l * qv * rate, qv};
+}
+
 template <bool kStiffness>
 void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLanes& Y,
                       const NodeLanes& Z, const NodeLanes& VX, const NodeLanes& VY,
@@ -267,8 +285,10 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
   SolidResult r;
   constexpr bool kTotal = LawOf<M>::needs_deformation_gradient;
   const double c_wave = material::dilatational_wave_speed(core::Material{mat});
-  const double inv_c = 1.0 / c_wave;
+  const double inv_c = 1.0 / c_wave, c2 = c_wave * c_wave;
   const double rho = mat.density;
+  const core::BulkViscosity bv = block.bulk_viscosity;
+  const bool bulk_on = bv.q1 != 0.0 || bv.q2 != 0.0;
   const double modulus = rho * c_wave * c_wave;  // K + 4/3 G
   const double qm = block.hourglass.qm;
   const bool stiffness_hg = block.hourglass.ihq == 4 || block.hourglass.ihq == 5;
@@ -355,12 +375,6 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         return r;
       }
       st.volume[c0 + k] = vol[k];
-      // Stable step: L = 1 / sqrt(2 sum |b|^2) (see characteristic_length).
-      const double dte = st.dt_factor[c0 + k] * inv_c / std::sqrt(2.0 * bsq[k]);
-      if (dte < r.dt_min) {
-        r.dt_min = dte;
-        r.dt_element = c0 + k;
-      }
     }
     // Velocity gradient L_ij = sum_I v_iI b_jI; D and W for the material.
     for (std::size_t k = 0; k < kLanes; ++k) {
@@ -388,6 +402,29 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       s.w[0][k] = 0.5 * (l[1] - l[3]);
       s.w[1][k] = 0.5 * (l[5] - l[7]);
       s.w[2][k] = 0.5 * (l[6] - l[2]);
+    }
+    // Bulk viscosity and the stable step: L / c, L = 1 / sqrt(2 sum |b|^2)
+    // (characteristic_length), and L / (Q + sqrt(Q^2 + c^2)) where the element is compressed.
+    alignas(64) double bulk_q[kLanes], dte[kLanes];
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      bulk_q[k] = 0.0;
+      dte[k] = inv_c / std::sqrt(2.0 * bsq[k]);
+    }
+    if (bulk_on) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const BulkQ b = bulk_viscosity(bv, rho, c_wave, vol[k], s.d[0][k] + s.d[1][k] + s.d[2][k]);
+        if (b.qv > 0.0) {
+          bulk_q[k] = b.q;
+          dte[k] = 1.0 / (std::sqrt(2.0 * bsq[k]) * (b.qv + std::sqrt(b.qv * b.qv + c2)));
+        }
+      }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d = st.dt_factor[c0 + k] * dte[k];
+      if (d < r.dt_min) {
+        r.dt_min = d;
+        r.dt_element = c0 + k;
+      }
     }
     if constexpr (kTotal) {
       // F = sum_I x_I (x) b0_I with the uniform gradient of the reference configuration.
@@ -443,8 +480,10 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       }
     }
     add_power();
-    for (std::size_t k = 0; k < n; ++k)
-      r.internal_energy += 0.5 * power_sum[k] * vol[k] * dt;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double bulk_power = -bulk_q[k] * (s.d[0][k] + s.d[1][k] + s.d[2][k]);
+      r.internal_energy += (0.5 * power_sum[k] + bulk_power) * vol[k] * dt;
+    }
     if (plastic_heat) {
       for (std::size_t k = 0; k < n; ++k) {
         const double de = st.eps_p[c0 + k] - eps0[k];
@@ -454,7 +493,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
 
     for (int c = 0; c < 6; ++c)
       for (std::size_t k = 0; k < kLanes; ++k)
-        S[c][k] = k < n ? st.s[c][c0 + k] : 0.0;
+        S[c][k] = k < n ? st.s[c][c0 + k] - (c < 3 ? bulk_q[k] : 0.0) : 0.0;
     for (std::size_t k = 0; k < kLanes; ++k) {
       const double v = vol[k];
       for (int i = 0; i < 8; ++i) {
@@ -510,6 +549,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
 
   GaussGradients gg[kElems];
   UniformGradient mean[kElems];
+  double bulk_q[kElems], bulk_trace[kElems];
   PointScratch s;
   double temp[kChunk], eth[kElems], eps0[kChunk];
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
@@ -562,7 +602,12 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
             s.f[j][p] = scale * f[j];
         }
       }
-      const double dte = st.dt_factor[e] * characteristic_length(mean[k]) / c_wave;
+      const BulkQ b =
+          bulk_viscosity(block.bulk_viscosity, mat.density, c_wave, mean[k].volume, mean_trace);
+      bulk_q[k] = b.q;
+      bulk_trace[k] = mean_trace;
+      const double dte = st.dt_factor[e] * characteristic_length(mean[k]) /
+                         (b.qv + std::sqrt(b.qv * b.qv + c_wave * c_wave));
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = e;
@@ -606,6 +651,8 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
     add_power();
     for (std::size_t p = 0; p < np; ++p)
       r.internal_energy += 0.5 * power_sum[p] * gg[p / 8].weight_det[p % 8] * dt;
+    for (std::size_t k = 0; k < n; ++k)
+      r.internal_energy -= bulk_q[k] * bulk_trace[k] * mean[k].volume * dt;
 
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;
@@ -616,15 +663,16 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         const double sxx = st.s[0][p], syy = st.s[1][p], szz = st.s[2][p];
         const double sxy = st.s[3][p], syz = st.s[4][p], szx = st.s[5][p];
         const double pm = (sxx + syy + szz) / 3.0;
+        const double pq = pm - bulk_q[k];  // the mean stress with the bulk viscosity
         const double w = gg[k].weight_det[q];
         const double* bx = gg[k].bx[q];
         const double* by = gg[k].by[q];
         const double* bz = gg[k].bz[q];
         // Deviatoric stress with the point gradient, mean stress with the element's mean one.
         for (int i = 0; i < 8; ++i) {
-          f[3 * i + 0] += w * ((sxx - pm) * bx[i] + sxy * by[i] + szx * bz[i] + pm * bm.bx[i]);
-          f[3 * i + 1] += w * (sxy * bx[i] + (syy - pm) * by[i] + syz * bz[i] + pm * bm.by[i]);
-          f[3 * i + 2] += w * (szx * bx[i] + syz * by[i] + (szz - pm) * bz[i] + pm * bm.bz[i]);
+          f[3 * i + 0] += w * ((sxx - pm) * bx[i] + sxy * by[i] + szx * bz[i] + pq * bm.bx[i]);
+          f[3 * i + 1] += w * (sxy * bx[i] + (syy - pm) * by[i] + syz * bz[i] + pq * bm.by[i]);
+          f[3 * i + 2] += w * (szx * bx[i] + syz * by[i] + (szz - pm) * bz[i] + pq * bm.bz[i]);
         }
       }
       double heat = 0.0;

@@ -88,6 +88,7 @@ KeywordSpec database_rcforc_keyword();
 KeywordSpec database_bndout_keyword();
 KeywordSpec database_spcforc_keyword();
 KeywordSpec control_accuracy_keyword();
+KeywordSpec control_bulk_viscosity_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
 KeywordSpec database_sleout_keyword();
@@ -164,6 +165,7 @@ std::span<const KeywordSpec> keyword_registry() {
       control_timestep_keyword(),
       control_energy_keyword(),
       control_accuracy_keyword(),
+      control_bulk_viscosity_keyword(),
       control_output_keyword(),
       control_rigid_keyword(),
       control_hourglass_keyword(),

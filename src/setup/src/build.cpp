@@ -128,6 +128,23 @@ struct Builder {
     return hg;
   }
 
+  // The part's bulk viscosity: its *HOURGLASS Q1 and Q2, else *CONTROL_BULK_VISCOSITY's,
+  // else LS-DYNA's defaults 1.5 and 0.06.
+  core::BulkViscosity bulk_viscosity_of(const model::PartDesc& p) {
+    core::BulkViscosity bv;
+    if (d.bulk_viscosity) {
+      bv.q1 = d.bulk_viscosity->q1;
+      bv.q2 = d.bulk_viscosity->q2;
+    }
+    for (const auto& x : d.hourglasses) {
+      if (p.hourglass_id != 0 && x.id == p.hourglass_id) {
+        bv.q1 = x.q1;
+        bv.q2 = x.q2;
+      }
+    }
+    return bv;
+  }
+
   void parts_and_elements() {
     std::unordered_map<int, const model::SectionSolidDesc*> solid_sections;
     for (const auto& s : d.solid_sections)
@@ -170,6 +187,7 @@ struct Builder {
         b.part = part_index;
         b.material = mat;
         b.hourglass = hourglass_of(p, 5, "solids");
+        b.bulk_viscosity = bulk_viscosity_of(p);
         solid_block_of_part.emplace(p.id, m.solid_blocks.size());
         m.solid_blocks.push_back(std::move(b));
       } else {

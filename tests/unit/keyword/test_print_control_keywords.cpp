@@ -1,6 +1,6 @@
-// *CONTROL_ACCURACY, *CONTROL_OUTPUT and *CONTROL_RIGID as LS-PrePost writes them: every card
-// read, the values kept, and the fields that would ask plyform for what it does not do
-// rejected by name with their line.
+// *CONTROL_ACCURACY, *CONTROL_OUTPUT, *CONTROL_RIGID and *CONTROL_BULK_VISCOSITY as LS-PrePost
+// writes them: every card read, the values kept, and the fields that would ask plyform for what
+// it does not do rejected by name with their line.
 #include <gtest/gtest.h>
 
 #include "deck_text_checks.hpp"
@@ -52,6 +52,22 @@ TEST(ControlRigid, MetalFormingUpdateAcceptedSelectiveMassScalingRejected) {
   expect_error("*CONTROL_RIGID\n0,0,0,0,0,2\n", 2, "*CONTROL_RIGID", "METALF", "must be one of");
   expect_error("*CONTROL_RIGID\n0,0,0,0,0,0,0,1\n", 2, "*CONTROL_RIGID", "RBSMS",
                "selective mass scaling");
+}
+
+TEST(ControlBulkViscosity, ReadsTheCoefficientsAndRejectsTheShellTypesByName) {
+  const ReadResult r = read_ok(
+      "*CONTROL_BULK_VISCOSITY\n$#      q1        q2      type     btype    tstype\n"
+      "       2.0      0.10         1         0         0\n");
+  ASSERT_TRUE(r.model.bulk_viscosity.has_value());
+  EXPECT_DOUBLE_EQ(r.model.bulk_viscosity->q1, 2.0);
+  EXPECT_DOUBLE_EQ(r.model.bulk_viscosity->q2, 0.1);
+  EXPECT_EQ(r.model.bulk_viscosity->where.line, 3);
+  const ReadResult blank = read_ok("*CONTROL_BULK_VISCOSITY\n\n");
+  EXPECT_DOUBLE_EQ(blank.model.bulk_viscosity->q1, 1.5);
+  EXPECT_DOUBLE_EQ(blank.model.bulk_viscosity->q2, 0.06);
+  expect_error("*CONTROL_BULK_VISCOSITY\n1.5,0.06,-1\n", 2, "*CONTROL_BULK_VISCOSITY", "TYPE",
+               "shells");
+  expect_error("*CONTROL_BULK_VISCOSITY\n-1.0\n", 2, "*CONTROL_BULK_VISCOSITY", "Q1", "range");
 }
 
 }  // namespace

@@ -35,13 +35,15 @@ constexpr std::array kHourglassFields{
               .default_value = 1.5,
               .min_value = 0.0,
               .unit = "-",
-              .description = "quadratic bulk viscosity coefficient"},
+              .description = "quadratic bulk viscosity coefficient of the part's solids "
+                             "(replaces *CONTROL_BULK_VISCOSITY's)"},
     FieldSpec{.name = "Q2",
               .type = FieldType::kReal,
               .default_value = 0.06,
               .min_value = 0.0,
               .unit = "-",
-              .description = "linear bulk viscosity coefficient"},
+              .description = "linear bulk viscosity coefficient of the part's solids "
+                             "(replaces *CONTROL_BULK_VISCOSITY's)"},
     FieldSpec{.name = "QB",
               .type = FieldType::kReal,
               .min_value = 0.0,

@@ -27,12 +27,20 @@ struct HourglassControl {
   double qm = 0.1;  ///< coefficient
 };
 
+/// Bulk viscosity (*CONTROL_BULK_VISCOSITY, or the part's *HOURGLASS Q1 and Q2): in
+/// compression a pressure q = rho l |tr D| (Q1 l |tr D| + Q2 c) (docs/materials.md).
+struct BulkViscosity {
+  double q1 = 1.5;   ///< quadratic coefficient
+  double q2 = 0.06;  ///< linear coefficient
+};
+
 /// Elements of one formulation and one material (and part), in blocks for the kernels.
 struct SolidBlock {
   SolidFormulation formulation = SolidFormulation::one_point;
   Index part = 0;      ///< index into Model::parts
   Index material = 0;  ///< index into Model::materials
   HourglassControl hourglass;
+  BulkViscosity bulk_viscosity;
   std::vector<GlobalId> element_id;
   std::vector<Index> connectivity;  ///< 8 node indices per element, LS-DYNA order
   /// Elements are ordered by colour: no two elements of a colour share a node, so a colour's

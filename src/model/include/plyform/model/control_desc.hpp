@@ -52,6 +52,16 @@ struct ControlAccuracyDesc {
   SourceLocation where;
 };
 
+/// *CONTROL_BULK_VISCOSITY: the bulk viscosity of the parts without *HOURGLASS.
+struct ControlBulkViscosityDesc {
+  double q1 = 1.5;   ///< Q1: quadratic coefficient
+  double q2 = 0.06;  ///< Q2: linear coefficient
+  int type = 1;      ///< TYPE: 1 solids; -1 solids and shells
+  int btype = 0;     ///< BTYPE: beams (none in plyform), as written
+  int tstype = 0;    ///< TSTYPE: thick shells (none in plyform), as written
+  SourceLocation where;
+};
+
 /// *CONTROL_HOURGLASS: the default hourglass control.
 struct ControlHourglassDesc {
   int ihq = 1;      ///< IHQ: default hourglass type

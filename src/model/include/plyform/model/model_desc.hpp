@@ -100,6 +100,7 @@ struct ModelDesc {
   std::optional<ControlShellDesc> control_shell;
   std::optional<ControlUnitsDesc> units;
   std::optional<ControlAccuracyDesc> accuracy;
+  std::optional<ControlBulkViscosityDesc> bulk_viscosity;
   std::optional<DatabaseBinaryD3plotDesc> d3plot;
   std::optional<DatabaseBinaryD3dumpDesc> d3dump;
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
