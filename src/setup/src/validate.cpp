@@ -16,6 +16,43 @@ std::string at(const model::SourceLocation& w) {
   return w.file + ":" + std::to_string(w.line);
 }
 
+// One mistake often repeats on every card it touches (the elements of a part that is not
+// defined, the nodes of a set from a missing include): the first kMaxAlike errors of the same
+// text on the same keyword, field and file are kept, and the rest are counted in one more
+// that names the last line, so the deck's other errors are not lost in the flood.
+std::vector<keyword::Diagnostic> condensed(std::vector<keyword::Diagnostic> errors) {
+  constexpr int kMaxAlike = 3;
+  struct Group {
+    int count = 0;
+    std::size_t summary = 0;  // index of the summary diagnostic in `out`
+    int first_line = 0;       // the line of the first error the summary stands for
+  };
+  std::unordered_map<std::string, Group> groups;
+  std::vector<keyword::Diagnostic> out;
+  for (keyword::Diagnostic& d : errors) {
+    const std::string key = d.where.file + '\n' + d.keyword + '\n' + d.field + '\n' + d.message;
+    Group& g = groups[key];
+    ++g.count;
+    if (g.count <= kMaxAlike) {
+      out.push_back(std::move(d));
+    } else if (g.count == kMaxAlike + 1) {
+      g.summary = out.size();
+      g.first_line = d.where.line;
+      out.push_back(std::move(d));
+    } else {
+      out[g.summary].where.line = d.where.line;  // the last one
+    }
+  }
+  for (auto& [key, g] : groups) {
+    if (g.count > kMaxAlike) {
+      keyword::Diagnostic& d = out[g.summary];
+      d.message += " (the same on " + std::to_string(g.count - kMaxAlike) + " more lines, " +
+                   std::to_string(g.first_line) + " to " + std::to_string(d.where.line) + ")";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
@@ -85,7 +122,7 @@ std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
       errors.push_back(std::move(d));
     }
   }
-  return errors;
+  return condensed(std::move(errors));
 }
 
 }  // namespace plyform::setup

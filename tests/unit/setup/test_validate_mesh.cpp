@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "plyform/keyword/read_deck.hpp"
+#include "plyform/setup/validate.hpp"
 #include "plyform/setup/validate_mesh.hpp"
 
 namespace plyform::setup {
@@ -313,6 +314,34 @@ TEST(ValidateMesh, RigidBodiesOwnTheirNodesAndHaveElements) {
             "deck.k:" + std::to_string(after_sheet_deck(7)) +
                 ": *PART: field PID: part 8 is rigid (*MAT_RIGID 2) but has no elements: a rigid "
                 "body takes its mass and inertia from its elements");
+}
+
+}  // namespace
+}  // namespace plyform::setup
+
+namespace plyform::setup {
+namespace {
+
+// setup::validate keeps three of the errors that repeat one mistake on many cards and counts
+// the rest in a fourth that names their lines.
+TEST(ValidateMesh, RepeatedErrorsAreCountedNotListed) {
+  std::string deck =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+      "*ELEMENT_SOLID\n";  // lines 1-10; the elements from line 11
+  for (int e = 1; e <= 10; ++e)
+    deck += std::to_string(e) + ",7,1,2,3,4,5,6,7,8\n";
+  const keyword::ReadResult read = keyword::read_deck_text(deck, "deck.k");
+  ASSERT_TRUE(read.ok()) << all(read.errors);
+  const std::vector<Diagnostic> errors = validate(read.model);
+  ASSERT_EQ(errors.size(), 4u) << all(errors);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(errors[static_cast<std::size_t>(i)].where.line, 11 + i);
+    EXPECT_EQ(errors[static_cast<std::size_t>(i)].field, "PID");
+  }
+  EXPECT_EQ(errors[3].where.line, 20);
+  EXPECT_NE(errors[3].message.find("part 7 is not defined"), std::string::npos);
+  EXPECT_NE(errors[3].message.find("the same on 7 more lines, 14 to 20"), std::string::npos)
+      << errors[3].message;
 }
 
 }  // namespace
