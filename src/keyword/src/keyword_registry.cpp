@@ -49,6 +49,8 @@ KeywordSpec mat_thermal_orthotropic_keyword();
 KeywordSpec hourglass_keyword();
 KeywordSpec set_node_list_keyword();
 KeywordSpec set_part_list_keyword();
+KeywordSpec set_node_keyword();
+KeywordSpec set_part_keyword();
 KeywordSpec set_segment_keyword();
 KeywordSpec contact_one_way_surface_to_surface_keyword();
 KeywordSpec contact_surface_to_surface_keyword();
@@ -140,6 +142,8 @@ std::span<const KeywordSpec> keyword_registry() {
       hourglass_keyword(),
       set_node_list_keyword(),
       set_part_list_keyword(),
+      set_node_keyword(),
+      set_part_keyword(),
       set_segment_keyword(),
       contact_one_way_surface_to_surface_keyword(),
       contact_surface_to_surface_keyword(),

@@ -72,3 +72,26 @@ TEST(ControlBulkViscosity, ReadsTheCoefficientsAndRejectsTheShellTypesByName) {
 
 }  // namespace
 }  // namespace plyform::keyword
+
+namespace plyform::keyword {
+namespace {
+
+using namespace test;  // read_ok
+
+// *SET_PART and *SET_NODE: LS-DYNA's short forms of *SET_PART_LIST and *SET_NODE_LIST (with
+// _TITLE), as LS-PrePost writes them; the _LIST forms are still themselves.
+TEST(SetShortForms, SetPartAndSetNodeReadAsTheirListForms) {
+  const ReadResult r = read_ok(
+      "*SET_PART\n5\n1,2,3\n*SET_PART_TITLE\nblank parts\n6\n4\n*SET_NODE\n7\n10,11\n"
+      "*SET_PART_LIST_TITLE\ntools\n8\n9\n");
+  ASSERT_EQ(r.model.part_sets.size(), 3u);
+  EXPECT_EQ(r.model.part_sets[0].id, 5);
+  EXPECT_EQ(r.model.part_sets[0].ids, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(r.model.part_sets[1].title, "blank parts");
+  EXPECT_EQ(r.model.part_sets[2].id, 8);
+  ASSERT_EQ(r.model.node_sets.size(), 1u);
+  EXPECT_EQ(r.model.node_sets[0].ids, (std::vector<int>{10, 11}));
+}
+
+}  // namespace
+}  // namespace plyform::keyword

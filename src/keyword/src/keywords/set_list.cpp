@@ -174,6 +174,20 @@ KeywordSpec set_part_list_keyword() {
           .summary = "A set of parts listed by id (zeros and blanks are skipped)."};
 }
 
+KeywordSpec set_node_keyword() {
+  KeywordSpec spec = set_node_list_keyword();
+  spec.name = "SET_NODE";
+  spec.summary = "The same keyword as *SET_NODE_LIST (LS-DYNA's short form).";
+  return spec;
+}
+
+KeywordSpec set_part_keyword() {
+  KeywordSpec spec = set_part_list_keyword();
+  spec.name = "SET_PART";
+  spec.summary = "The same keyword as *SET_PART_LIST (LS-DYNA's short form).";
+  return spec;
+}
+
 KeywordSpec set_segment_keyword() {
   return {.name = "SET_SEGMENT",
           .options = kNoneOrTitle,
