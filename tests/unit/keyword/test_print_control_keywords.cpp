@@ -95,3 +95,30 @@ TEST(SetShortForms, SetPartAndSetNodeReadAsTheirListForms) {
 
 }  // namespace
 }  // namespace plyform::keyword
+
+namespace plyform::keyword {
+namespace {
+
+using namespace test;  // read_ok, expect_error
+
+// *CONTROL_TIMESTEP card 2 as LS-PrePost writes it (at its defaults) is read; the
+// mass-scaling refinements it could ask for are rejected by name.
+TEST(ControlTimestepCard2, DefaultsReadRefinementsRejectedByName) {
+  const ReadResult r = read_ok(
+      "*CONTROL_TIMESTEP\n"
+      "$#  dtinit    tssfac      isdo    tslimt     dt2ms      lctm     erode     ms1st\n"
+      "       0.0       0.1         0 -5.000E-5       0.5         0         0         0\n"
+      "$#  dt2msf   dt2mslc     imscl    unused    unused     rmscl    unused      ihdo\n"
+      "       0.0         0         0                           0.0                   0\n");
+  ASSERT_TRUE(r.model.timestep.has_value());
+  EXPECT_DOUBLE_EQ(r.model.timestep->tssfac, 0.1);
+  expect_error("*CONTROL_TIMESTEP\n0.0,0.9\n0.5\n", 3, "*CONTROL_TIMESTEP", "DT2MSF", "range");
+  expect_error("*CONTROL_TIMESTEP\n0.0,0.9\n0,0,1\n", 3, "*CONTROL_TIMESTEP", "IMSCL",
+               "selective mass scaling");
+  expect_error("*CONTROL_TIMESTEP\n0.0,0.9\n0,0,0,,,0,,1\n", 3, "*CONTROL_TIMESTEP", "IHDO",
+               "IHDO 1");
+  expect_error("*CONTROL_TIMESTEP\n0.0,0.9\n\n1\n", 4, "*CONTROL_TIMESTEP", "", "card 3");
+}
+
+}  // namespace
+}  // namespace plyform::keyword

@@ -102,8 +102,48 @@ constexpr std::array kTimestepFields{
               .unit = "-",
               .description = "mass scaling at the first step only; kept as written"},
 };
+// Card 2 (LS-PrePost writes it at its defaults): mass-scaling refinements plyform does not have,
+// each accepted at its default only.
+constexpr std::array kZeroInt{0};
+constexpr std::array kTimestepCard2Fields{
+    FieldSpec{.name = "DT2MSF",
+              .min_value = 0.0,
+              .max_value = 0.0,
+              .unit = "-",
+              .description = "mass scaling to a factor of the initial step (0 only: not "
+                             "implemented; give the step as DT2MS)"},
+    FieldSpec{.name = "DT2MSLC",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "curve of DT2MS against time",
+              .allowed = kZeroInt,
+              .allowed_note = "a curve of the mass-scaling step is not implemented"},
+    FieldSpec{.name = "IMSCL",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "selective mass scaling",
+              .allowed = kZeroInt,
+              .allowed_note = "selective mass scaling is not implemented"},
+    FieldSpec{.name = "UNUSED4", .type = FieldType::kText, .description = "unused"},
+    FieldSpec{.name = "UNUSED5", .type = FieldType::kText, .description = "unused"},
+    FieldSpec{.name = "RMSCL",
+              .min_value = 0.0,
+              .max_value = 0.0,
+              .unit = "-",
+              .description = "rotational option of selective mass scaling (0 only: not "
+                             "implemented)"},
+    FieldSpec{.name = "UNUSED7", .type = FieldType::kText, .description = "unused"},
+    FieldSpec{.name = "IHDO",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "how the solids' step is found (0: plyform's, from the element's "
+                             "characteristic length)",
+              .allowed = kZeroInt,
+              .allowed_note = "the alternative solid step of IHDO 1 is not implemented"},
+};
 constexpr std::array kTimestepCards{
     CardSpec{.title = "Card 1", .fields = kTimestepFields, .presence = "required"},
+    CardSpec{.title = "Card 2", .fields = kTimestepCard2Fields, .presence = "optional"},
 };
 
 void read_control_timestep(KeywordInput& in) {
@@ -123,9 +163,11 @@ void read_control_timestep(KeywordInput& in) {
                                .ms1st = v.integer("MS1ST"),
                                .where = in.where(line->line)};
   require_zero(in, line->line, "LCTM", d.lctm, "a curve of the maximum time step");
-  if (const auto card2 = in.next_nonblank_line()) {
-    in.fail(card2->line, "",
-            "card 2 of *CONTROL_TIMESTEP (DT2MSF DT2MSLC IMSCL ...) is not supported yet");
+  if (const auto card2 = in.next_line())
+    (void)in.read(kTimestepCards[1], *card2);
+  if (const auto card3 = in.next_nonblank_line()) {
+    in.fail(card3->line, "",
+            "card 3 of *CONTROL_TIMESTEP (IGADO ...) is not read (plyform reads cards 1-2)");
   }
   store_once(in, in.model().timestep, d);
 }
