@@ -28,17 +28,18 @@ TEST(ControlAccuracy, ReadsOsuAndInnWithTheirDefaults) {
   expect_error("*CONTROL_ACCURACY\n0,1,0,0,0.5\n", 2, "*CONTROL_ACCURACY", "EXACC", "range");
 }
 
-TEST(ControlOutput, ReadsTheFourCardsLsPrePostWrites) {
+TEST(ControlOutput, ReadsTheFiveCardsLsPrePostWrites) {
   const ReadResult r = read_ok(
       "*CONTROL_OUTPUT\n"
       "         1         3         0         1       0.0         0       100         0\n"
       "         0         0         2        50         0       0.0         0         0\n"
       "         2         0         1         0         0         0      10.0\n"
       "         0         0         0         0         0         0         0         0\n"
+      "         0         0         0         0         0\n"
       "*CONTROL_OUTPUT\n1,3\n");
   EXPECT_TRUE(r.ok());
   expect_error("*CONTROL_OUTPUT\n1\n0,1\n", 3, "*CONTROL_OUTPUT", "IERODE", "erode");
-  expect_error("*CONTROL_OUTPUT\n\n\n\n\n1\n", 6, "*CONTROL_OUTPUT", "", "cards 5");
+  expect_error("*CONTROL_OUTPUT\n\n\n\n\n\n1\n", 7, "*CONTROL_OUTPUT", "", "cards 6");
 }
 
 TEST(ControlRigid, MetalFormingUpdateAcceptedSelectiveMassScalingRejected) {

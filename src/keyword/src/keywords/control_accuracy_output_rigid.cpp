@@ -113,10 +113,9 @@ constexpr std::array kOutput3{
     kept("SOLSIG", "extrapolated stresses of solids"),
     kept("MSGFLG", "message file option"),
     kept_real("CDETOL", "tolerance of the contact output"),
-    kept("PHSCHNG", "phase change output"),
 };
 constexpr std::array kOutput4{
-    kept("PHSCHNG", "phase change output (old card 4 layout)"),
+    kept("PHSCHNG", "phase change output"),
     kept("DEMDEN", "DEM density output"),
     kept("ICRFILE", "curve file of ELOUT"),
     kept("SPC2BND", "SPC energy booked as boundary energy"),
@@ -125,11 +124,17 @@ constexpr std::array kOutput4{
     kept("HISNOUT", "history output of nodes"),
     kept("ENGOUT", "energy output of contacts"),
 };
+constexpr std::array kOutput5{
+    kept("INSF", "shell set file output"),   kept("ISOLSF", "solid set file output"),
+    kept("IBSF", "beam set file output"),    kept("ISSF", "segment set file output"),
+    kept("MLKBAG", "airbag leakage output"),
+};
 constexpr std::array kOutputCards{
     CardSpec{.title = "Card 1", .fields = kOutput1, .presence = "optional"},
     CardSpec{.title = "Card 2", .fields = kOutput2, .presence = "optional"},
     CardSpec{.title = "Card 3", .fields = kOutput3, .presence = "optional"},
     CardSpec{.title = "Card 4", .fields = kOutput4, .presence = "optional"},
+    CardSpec{.title = "Card 5", .fields = kOutput5, .presence = "optional"},
 };
 
 void read_control_output(KeywordInput& in) {
@@ -141,7 +146,7 @@ void read_control_output(KeywordInput& in) {
   }
   if (const auto more = in.next_nonblank_line()) {
     in.fail(more->line, "",
-            "cards 5 and after of *CONTROL_OUTPUT are not read (plyform reads cards 1-4)");
+            "cards 6 and after of *CONTROL_OUTPUT are not read (plyform reads cards 1-5)");
   }
 }
 
