@@ -296,7 +296,15 @@ TEST(ControlContact, FieldsPlyformDoesNotImplementAreNamed) {
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,3\n", 4, kKw, "PEN_SF", "*PART_CONTACT");
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,0,2\n", 4, kKw, "PTSCL", "blank, 0 or 1");
   expect_error("*CONTROL_CONTACT\n0.1\n\n\n1\n", 5, kKw, "IGNORE", "initial penetrations");
-  expect_error("*CONTROL_CONTACT\n0.1\n\n\n\n1\n", 6, kKw, "", "cards 5 and after");
+  // Cards 5 and 6 as LS-PrePost writes them are read; what they could ask of the contacts is
+  // rejected by name, and a seventh card is an error.
+  const ReadResult six = read_ok(
+      "*CONTROL_CONTACT\n0.1,0.0,2,2,1,0,2,0\n0,0,10,0,4.0,1,0,0\n0,0,0,0,0,0,0\n"
+      "0,0,0,0,0,0,0.1\n0,0,1,0.0,1.0,0,0.0,0\n0,0,0,0,0,,0.0,0\n");
+  EXPECT_TRUE(six.model.control_contact.has_value());
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n\n1\n", 6, kKw, "ISYM", "symmetry-plane");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n\n\n0,1\n", 7, kKw, "PSTIFF", "PSTIFF 1");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n\n\n\n1\n", 8, kKw, "", "cards 7 and after");
 }
 
 // --- *DATABASE_RCFORC

@@ -194,14 +194,60 @@ constexpr std::array kCard4{
               .description = "directional tie of tied contacts; read and ignored"},
 };
 
+// Cards 5 and 6 (LS-PrePost writes them at their defaults): what concerns rigid walls, spot
+// welds, erosion, tied contacts and isogeometric elements, none of which plyform has, is kept;
+// what would change plyform's contacts is accepted at its default only.
+constexpr FieldSpec kept_int(std::string_view name, std::string_view what) {
+  return FieldSpec{.name = name, .type = FieldType::kInteger, .unit = "-", .description = what};
+}
+constexpr FieldSpec zero_only(std::string_view name, std::string_view what, std::string_view note) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .unit = "-",
+                   .description = what,
+                   .allowed = kZeroOnly,
+                   .allowed_note = note};
+}
+constexpr std::array kCard5{
+    zero_only("ISYM", "symmetry planes of automatic contacts (0 only)",
+              "the symmetry-plane treatment of automatic contacts is not implemented"),
+    kept_int("NSEROD", "eroding single-surface contact (no erosion in plyform); kept"),
+    kept_int("RWGAPS", "rigid wall gap stiffness (no rigid walls); kept"),
+    FieldSpec{.name = "RWGDTH", .unit = "length", .description = "rigid wall gap (kept)"},
+    FieldSpec{.name = "RWKSF",
+              .default_value = 1.0,
+              .unit = "-",
+              .description = "rigid wall stiffness scale (kept)"},
+    zero_only("ICOV", "covariant formulation of forming contacts (0 only)",
+              "the covariant formulation (ICOV 1) is not implemented"),
+    FieldSpec{.name = "SWRADF", .unit = "-", .description = "spot weld radius scale (kept)"},
+    zero_only("ITHOFF", "thickness offsets of thermal contacts (0 only)",
+              "thermal contacts take the surfaces' offsets as plyform's contacts do"),
+};
+constexpr std::array kCard6{
+    zero_only("SHLEDG", "shape of shell edges in contact (0 only)",
+              "the edge shapes of SHLEDG 1 and 2 are not implemented"),
+    zero_only("PSTIFF", "penalty from volumes and areas (0 only)",
+              "the penalty from masses and the step (PSTIFF 1) is not implemented"),
+    zero_only("ITHCNT", "thermal contact heat transfer method (0 only)",
+              "plyform has the conductance of the _THERMAL cards (ITHCNT 0)"),
+    kept_int("TDCNOF", "tied contact offsets (no tied contacts); kept"),
+    kept_int("FTALL", "force transducers' output; kept"),
+    FieldSpec{.name = "UNUSED", .type = FieldType::kText, .description = "unused"},
+    FieldSpec{
+        .name = "SHLTRW", .unit = "-", .description = "shell thickness at rigid walls (kept)"},
+    kept_int("IGACTC", "isogeometric contact (none in plyform); kept"),
+};
+
 constexpr std::array kCards{
     CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
     CardSpec{.title = "Card 2", .fields = kCard2, .presence = "optional"},
     CardSpec{.title = "Card 3", .fields = kCard3, .presence = "optional"},
-    CardSpec{.title = "Card 4",
-             .fields = kCard4,
-             .presence = "optional; cards 5 and after are "
-                         "not supported"},
+    CardSpec{.title = "Card 4", .fields = kCard4, .presence = "optional"},
+    CardSpec{.title = "Card 5", .fields = kCard5, .presence = "optional"},
+    CardSpec{.title = "Card 6",
+             .fields = kCard6,
+             .presence = "optional; cards 7 and after are not read"},
 };
 
 void read_control_contact(KeywordInput& in) {
@@ -239,11 +285,14 @@ void read_control_contact(KeywordInput& in) {
   if (const auto line4 = in.next_line()) {
     desc.frceng = in.read(kCards[3], *line4).integer("FRCENG");
   }
+  for (std::size_t card = 4; card < 6; ++card) {
+    if (const auto line = in.next_line())
+      (void)in.read(kCards[card], *line);
+  }
   if (has_more_cards(in)) {
     const auto extra = in.next_nonblank_line();
     in.fail(extra->line, "",
-            "cards 5 and after of *CONTROL_CONTACT (ISYM, NSEROD, RWGAPS, ...) are not "
-            "supported; end the keyword after card 4");
+            "cards 7 and after of *CONTROL_CONTACT are not read; end the keyword after card 6");
   }
   if (in.model().control_contact) {
     in.warn(in.keyword().line, "",
@@ -265,8 +314,9 @@ KeywordSpec control_contact_keyword() {
               "Defaults of every contact: SLSFAC, PENOPT (1-3), SHLTHK, NSBCS and the default "
               "friction of card 3. Fields about rigid walls, spot welds, erosion, tied or "
               "single-surface contacts and user routines are read and ignored; INTERM, "
-              "TH, TH_SF, PEN_SF and IGNORE must keep their defaults. Given twice, the last one "
-              "is used (with a warning)."};
+              "TH, TH_SF, PEN_SF and IGNORE must keep their defaults; cards 5 and 6 are read "
+              "(ISYM, ICOV, ITHOFF, SHLEDG, PSTIFF and ITHCNT at their defaults). Given twice, the "
+              "last one is used (with a warning)."};
 }
 
 }  // namespace plyform::keyword
