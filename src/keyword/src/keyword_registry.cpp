@@ -67,6 +67,7 @@ KeywordSpec boundary_convection_set_keyword();
 KeywordSpec boundary_flux_set_keyword();
 KeywordSpec boundary_radiation_set_keyword();
 KeywordSpec initial_velocity_generation_keyword();
+KeywordSpec initial_velocity_node_keyword();
 KeywordSpec initial_temperature_node_keyword();
 KeywordSpec initial_temperature_set_keyword();
 KeywordSpec load_node_point_keyword();
@@ -160,6 +161,7 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_flux_set_keyword(),
       boundary_radiation_set_keyword(),
       initial_velocity_generation_keyword(),
+      initial_velocity_node_keyword(),
       initial_temperature_node_keyword(),
       initial_temperature_set_keyword(),
       load_node_point_keyword(),

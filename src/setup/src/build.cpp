@@ -355,7 +355,7 @@ struct Builder {
   }
 
   void initial_velocities() {
-    if (d.initial_velocities.empty())
+    if (d.initial_velocities.empty() && d.initial_node_velocities.empty())
       return;
     const std::size_t n = m.node_count();
     m.v0x.assign(n, 0.0);
@@ -408,6 +408,37 @@ struct Builder {
         m.v0y[i] = v.vy + v.omega * (az * rx - ax * rz);
         m.v0z[i] = v.vz + v.omega * (ax * ry - ay * rx);
       }
+    }
+    // *INITIAL_VELOCITY_NODE last: it replaces a generated velocity. Angular velocities go to
+    // the nodes of shells (the only nodes with rotations).
+    std::vector<char> has_rotation;
+    for (const model::InitialVelocityNodeDesc& v : d.initial_node_velocities) {
+      const auto i = static_cast<std::size_t>(node.at(v.node_id));
+      m.v0x[i] = v.vx;
+      m.v0y[i] = v.vy;
+      m.v0z[i] = v.vz;
+      if (v.vxr == 0.0 && v.vyr == 0.0 && v.vzr == 0.0)
+        continue;
+      if (has_rotation.empty()) {
+        has_rotation.assign(n, 0);
+        for (const auto& b : m.shell_blocks)
+          for (Index c : b.connectivity)
+            has_rotation[static_cast<std::size_t>(c)] = 1;
+      }
+      if (!has_rotation[i]) {
+        error(v.where, "*INITIAL_VELOCITY_NODE", "VXR",
+              "node " + std::to_string(v.node_id) +
+                  " has an angular velocity but no rotations (it belongs to no shell)");
+        continue;
+      }
+      if (m.w0x.empty()) {
+        m.w0x.assign(n, 0.0);
+        m.w0y.assign(n, 0.0);
+        m.w0z.assign(n, 0.0);
+      }
+      m.w0x[i] = v.vxr;
+      m.w0y[i] = v.vyr;
+      m.w0z[i] = v.vzr;
     }
   }
 

@@ -449,6 +449,9 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
     }
   }
 
+  for (const model::InitialVelocityNodeDesc& v : model.initial_node_velocities)
+    check_ref(nodes, v.node_id, v.where, "*INITIAL_VELOCITY_NODE", "NID", errors);
+
   // Output -> nodes, part sets.
   for (const model::DatabaseHistoryNodeDesc& h : model.history_nodes) {
     for (std::size_t i = 0; i < h.node_ids.size(); ++i) {

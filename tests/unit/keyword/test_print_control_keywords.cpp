@@ -123,3 +123,26 @@ TEST(ControlTimestepCard2, DefaultsReadRefinementsRejectedByName) {
 
 }  // namespace
 }  // namespace plyform::keyword
+
+namespace plyform::keyword {
+namespace {
+
+using namespace test;  // read_ok, expect_error
+
+TEST(InitialVelocityNode, ReadsEachNodesVelocities) {
+  const ReadResult r = read_ok(
+      "*INITIAL_VELOCITY_NODE\n"
+      "   1000001       0.0       0.0  100.0000       0.0       0.0       0.0\n"
+      "         2 0.0000000-7000.0000 0.0000000\n"
+      "3,1,2,3,0.1,0.2,0.3\n");
+  ASSERT_EQ(r.model.initial_node_velocities.size(), 3u);
+  EXPECT_EQ(r.model.initial_node_velocities[0].node_id, 1000001);
+  EXPECT_DOUBLE_EQ(r.model.initial_node_velocities[0].vz, 100.0);
+  EXPECT_DOUBLE_EQ(r.model.initial_node_velocities[1].vy, -7000.0);
+  EXPECT_DOUBLE_EQ(r.model.initial_node_velocities[2].vzr, 0.3);
+  EXPECT_EQ(r.model.initial_node_velocities[2].where.line, 4);
+  expect_error("*INITIAL_VELOCITY_NODE\n,1.0\n", 2, "*INITIAL_VELOCITY_NODE", "NID", "required");
+}
+
+}  // namespace
+}  // namespace plyform::keyword

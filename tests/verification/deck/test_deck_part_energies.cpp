@@ -89,3 +89,38 @@ TEST(DeckPartEnergies, FreeFlyingPartsCarryTheirOwnKineticEnergyAndMomentum) {
 
 }  // namespace
 }  // namespace plyform
+
+namespace plyform {
+namespace {
+
+// *INITIAL_VELOCITY_NODE replaces a generated velocity node by node; angular velocities reach
+// the nodes of shells, and one on a node without rotations is an error naming it.
+TEST(DeckInitialVelocityNode, ReplacesTheGeneratedVelocityAndGivesShellNodesTheirSpin) {
+  test::TempDir dir;
+  std::string text = deck();
+  const std::string node_cards =
+      "*INITIAL_VELOCITY_NODE\n2,1.0,2.0,3.0\n6,0,0,0,0.5,0.0,-0.5\n*END\n";
+  text.replace(text.find("*END\n"), 5, node_cards);
+  const auto read = keyword::read_deck(dir.write("nodes.k", text));
+  ASSERT_TRUE(read.ok()) << read.errors.front().to_string();
+  auto built = setup::build(read.model);
+  ASSERT_TRUE(built.errors.empty()) << built.errors.front().to_string();
+  const core::Model& m = *built.model;
+  const auto at = [&](core::GlobalId id) {
+    for (std::size_t i = 0; i < m.node_count(); ++i)
+      if (m.node_id[i] == id)
+        return i;
+    return m.node_count();
+  };
+  EXPECT_DOUBLE_EQ(m.v0x[at(2)], 1.0);
+  EXPECT_DOUBLE_EQ(m.v0z[at(2)], 3.0);
+  EXPECT_DOUBLE_EQ(m.v0x[at(3)], 100.0);  // generated, untouched
+  EXPECT_DOUBLE_EQ(m.v0x[at(6)], 0.0);
+  ASSERT_FALSE(m.w0x.empty());
+  EXPECT_DOUBLE_EQ(m.w0x[at(6)], 0.5);
+  EXPECT_DOUBLE_EQ(m.w0z[at(6)], -0.5);
+  EXPECT_DOUBLE_EQ(m.w0x[at(2)], 0.0);
+}
+
+}  // namespace
+}  // namespace plyform

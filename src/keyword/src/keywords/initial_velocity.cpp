@@ -1,4 +1,5 @@
-// *INITIAL_VELOCITY_GENERATION: translational and angular initial velocity of a set.
+// *INITIAL_VELOCITY_GENERATION: translational and angular initial velocity of a set;
+// *INITIAL_VELOCITY_NODE: node by node.
 #include <array>
 
 #include "../keyword_registry.hpp"
@@ -111,6 +112,43 @@ void read_initial_velocity_generation(KeywordInput& in) {
   }
 }
 
+// --- *INITIAL_VELOCITY_NODE
+constexpr std::array kNodeVelocityFields{
+    FieldSpec{.name = "NID",
+              .type = FieldType::kInteger,
+              .min_value = 1,
+              .unit = "-",
+              .description = "node id",
+              .required = true},
+    FieldSpec{.name = "VX", .unit = "length/time", .description = "x velocity"},
+    FieldSpec{.name = "VY", .unit = "length/time", .description = "y velocity"},
+    FieldSpec{.name = "VZ", .unit = "length/time", .description = "z velocity"},
+    FieldSpec{.name = "VXR",
+              .unit = "radian/time",
+              .description = "angular velocity about x (a node of a shell: its rotation)"},
+    FieldSpec{.name = "VYR", .unit = "radian/time", .description = "angular velocity about y"},
+    FieldSpec{.name = "VZR", .unit = "radian/time", .description = "angular velocity about z"},
+};
+constexpr std::array kNodeVelocityCards{
+    CardSpec{.title = "Node cards",
+             .fields = kNodeVelocityFields,
+             .presence = "one node per card, until the next keyword"},
+};
+
+void read_initial_velocity_node(KeywordInput& in) {
+  while (const auto line = in.next_nonblank_line()) {
+    const CardValues v = in.read(kNodeVelocityCards[0], *line);
+    in.model().initial_node_velocities.push_back({.node_id = v.integer("NID"),
+                                                  .vx = v.real("VX"),
+                                                  .vy = v.real("VY"),
+                                                  .vz = v.real("VZ"),
+                                                  .vxr = v.real("VXR"),
+                                                  .vyr = v.real("VYR"),
+                                                  .vzr = v.real("VZR"),
+                                                  .where = in.where(line->line)});
+  }
+}
+
 }  // namespace
 
 KeywordSpec initial_velocity_generation_keyword() {
@@ -121,6 +159,17 @@ KeywordSpec initial_velocity_generation_keyword() {
           .summary =
               "Initial velocity v = (VX, VY, VZ) + OMEGA n x (x - xc) of a part, part "
               "set or node set, at t = 0."};
+}
+
+KeywordSpec initial_velocity_node_keyword() {
+  return {.name = "INITIAL_VELOCITY_NODE",
+          .options = kNoOptions,
+          .handler = read_initial_velocity_node,
+          .cards = kNodeVelocityCards,
+          .summary =
+              "The velocity of single nodes at t = 0, translational and (nodes of shells) "
+              "angular; it replaces what an *INITIAL_VELOCITY_GENERATION gave the node. An "
+              "angular velocity on a node without rotations (solids only) is an error."};
 }
 
 }  // namespace plyform::keyword

@@ -26,4 +26,13 @@ struct InitialVelocityGenerationDesc {
   SourceLocation where;  ///< the line of card 1
 };
 
+/// *INITIAL_VELOCITY_NODE: one node's translational and angular velocity at t = 0 (it replaces
+/// what an *INITIAL_VELOCITY_GENERATION gave the node).
+struct InitialVelocityNodeDesc {
+  int node_id = 0;                         ///< NID
+  double vx = 0.0, vy = 0.0, vz = 0.0;     ///< VX VY VZ, length / time
+  double vxr = 0.0, vyr = 0.0, vzr = 0.0;  ///< VXR VYR VZR, radians / time (shell nodes)
+  SourceLocation where;
+};
+
 }  // namespace plyform::model

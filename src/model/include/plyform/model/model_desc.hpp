@@ -81,6 +81,7 @@ struct ModelDesc {
   std::vector<LoadNodeDesc> nodal_loads;
   std::vector<LoadRigidBodyDesc> rigid_body_loads;
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
+  std::vector<InitialVelocityNodeDesc> initial_node_velocities;
   std::vector<InitialTemperatureDesc> initial_temperatures;
   std::vector<BoundaryTemperatureDesc> temperature_histories;
 
