@@ -482,6 +482,10 @@ struct Builder {
     for (const model::DatabaseHistoryNodeDesc& h : d.history_nodes) {
       for (int id : h.node_ids)
         m.output.history_nodes.push_back(node.at(id));
+      for (int sid : h.set_ids) {
+        for (Index i : targets(model::NodeTarget::kSet, sid))
+          m.output.history_nodes.push_back(i);
+      }
     }
   }
 };

@@ -454,6 +454,9 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
 
   // Output -> nodes, part sets.
   for (const model::DatabaseHistoryNodeDesc& h : model.history_nodes) {
+    for (std::size_t i = 0; i < h.set_ids.size(); ++i)
+      check_ref(node_sets, h.set_ids[i], h.sets_where[i], "*DATABASE_HISTORY_NODE_SET",
+                cat("NSID", i + 1), errors);
     for (std::size_t i = 0; i < h.node_ids.size(); ++i) {
       if (!nodes.contains(h.node_ids[i])) {
         errors.push_back({h.ids_where[i], "*DATABASE_HISTORY_NODE",

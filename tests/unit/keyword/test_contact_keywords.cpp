@@ -339,21 +339,31 @@ TEST(DatabaseOutputs, SpcforcSleoutMatsumReadTheirIntervals) {
 }
 
 TEST(DatabaseOutputs, OutputRequestsPlyformDoesNotWriteAreWarnedAboutNotRejected) {
-  // An unknown output keyword, and an option of a known one, with cards of their own.
+  // Unknown output keywords (one with an option), with cards of their own.
   const ReadResult r = read_ok(
       "*DATABASE_SECFORC\n1e-4\n*DATABASE_EXTENT_BINARY\n0,0,3,1\n0,0,0,0,0\n"
-      "*DATABASE_HISTORY_NODE_SET\n7\n*DATABASE_GLSTAT\n1e-3\n");
+      "*DATABASE_HISTORY_SHELL_ID\n7\n*DATABASE_GLSTAT\n1e-3\n");
   ASSERT_EQ(r.warnings.size(), 3u);
   EXPECT_EQ(r.warnings[0].keyword, "*DATABASE_SECFORC");
   EXPECT_EQ(r.warnings[0].where.line, 1);
   EXPECT_NE(r.warnings[0].message.find("not written"), std::string::npos);
   EXPECT_EQ(r.warnings[1].keyword, "*DATABASE_EXTENT_BINARY");
-  EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_NODE_SET");
+  EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_SHELL_ID");
   ASSERT_EQ(r.model.ascii_outputs.size(), 1u);  // the cards passed over are not read as others
   EXPECT_EQ(r.model.ascii_outputs[0].name, "GLSTAT");
   // Any other keyword plyform does not know stays an error.
   expect_error("*CONTROL_IMPLICIT_GENERAL\n1\n", 1, "*CONTROL_IMPLICIT_GENERAL", "",
                "unsupported keyword");
+}
+
+TEST(DatabaseHistoryNodeSet, ReadsTheNodeSetIds) {
+  const ReadResult r = read_ok("*DATABASE_HISTORY_NODE_SET\n3,0,4\n5\n");
+  ASSERT_EQ(r.model.history_nodes.size(), 1u);
+  EXPECT_EQ(r.model.history_nodes[0].set_ids, (std::vector<int>{3, 4, 5}));
+  EXPECT_TRUE(r.model.history_nodes[0].node_ids.empty());
+  EXPECT_EQ(r.model.history_nodes[0].sets_where[2].line, 3);
+  expect_error("*DATABASE_HISTORY_NODE_SET\n-2\n", 2, "*DATABASE_HISTORY_NODE_SET", "NSID1",
+               "range");
 }
 
 // --- *INITIAL_TEMPERATURE_NODE / _SET

@@ -124,3 +124,35 @@ TEST(DeckInitialVelocityNode, ReplacesTheGeneratedVelocityAndGivesShellNodesThei
 
 }  // namespace
 }  // namespace plyform
+
+namespace plyform {
+namespace {
+
+// *DATABASE_HISTORY_NODE_SET: every node of the sets becomes a history node (nodout.csv); an
+// undefined set is an error with its line.
+TEST(DeckHistoryNodeSet, TheSetsNodesAreHistoryNodes) {
+  test::TempDir dir;
+  std::string text = deck();
+  text.replace(text.find("*END\n"), 5,
+               "*SET_NODE_LIST\n9\n5,6,7\n*DATABASE_HISTORY_NODE_SET\n9\n"
+               "*DATABASE_HISTORY_NODE\n101\n*END\n");
+  const auto read = keyword::read_deck(dir.write("history.k", text));
+  ASSERT_TRUE(read.ok()) << read.errors.front().to_string();
+  ASSERT_TRUE(setup::validate(read.model).empty());
+  auto built = setup::build(read.model);
+  ASSERT_TRUE(built.errors.empty()) << built.errors.front().to_string();
+  std::vector<core::GlobalId> ids;
+  for (core::Index i : built.model->output.history_nodes)
+    ids.push_back(built.model->node_id[static_cast<std::size_t>(i)]);
+  EXPECT_EQ(ids, (std::vector<core::GlobalId>{5, 6, 7, 101}));
+  std::string bad = deck();
+  bad.replace(bad.find("*END\n"), 5, "*DATABASE_HISTORY_NODE_SET\n8\n*END\n");
+  const auto read_bad = keyword::read_deck(dir.write("bad.k", bad));
+  ASSERT_TRUE(read_bad.ok());
+  const auto errors = setup::validate(read_bad.model);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].keyword, "*DATABASE_HISTORY_NODE_SET");
+}
+
+}  // namespace
+}  // namespace plyform

@@ -8,6 +8,8 @@
 namespace plyform::keyword {
 namespace {
 
+constexpr std::array<std::string_view, 3> kNoneOrIdOrSet{"", "ID", "SET"};
+
 // --- *DATABASE_BINARY_D3PLOT
 constexpr std::array kD3plotFields{
     FieldSpec{.name = "DT",
@@ -228,6 +230,16 @@ constexpr std::array kHistoryIdFields{
               .description = "a name for the node's history",
               .rest_of_line = true},
 };
+constexpr FieldSpec history_set_field() {
+  return FieldSpec{.name = "NSID",
+                   .type = FieldType::kInteger,
+                   .min_value = 0,
+                   .unit = "-",
+                   .description = "node set id (blank or 0: none)"};
+}
+constexpr std::array kHistorySetFields{
+    history_set_field(), history_set_field(), history_set_field(), history_set_field(),
+    history_set_field(), history_set_field(), history_set_field(), history_set_field()};
 constexpr std::array kHistoryCards{
     CardSpec{.title = "Node cards",
              .fields = kHistoryFields,
@@ -236,14 +248,29 @@ constexpr std::array kHistoryCards{
     CardSpec{.title = "Node cards (_ID)",
              .fields = kHistoryIdFields,
              .presence = "with _ID: one node per card, until the next keyword"},
+    CardSpec{.title = "Node set cards (_SET)",
+             .fields = kHistorySetFields,
+             .presence = "with _SET: eight node set ids per card, until the next keyword",
+             .numbering = FieldNumbering::kSequential},
 };
 
 void read_history_node(KeywordInput& in) {
   model::DatabaseHistoryNodeDesc d;
   d.where = in.keyword_where();
   const bool with_id = in.option() == "ID";
+  const bool with_set = in.option() == "SET";
   int card = 0;
   while (const auto line = in.next_nonblank_line()) {
+    if (with_set) {
+      const CardValues v = in.read(kHistoryCards[2], *line, card++);
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (const int id = static_cast<int>(v.at(i).integer); id != 0) {
+          d.set_ids.push_back(id);
+          d.sets_where.push_back(in.where(line->line));
+        }
+      }
+      continue;
+    }
     if (with_id) {
       const CardValues v = in.read(kHistoryCards[1], *line);
       d.node_ids.push_back(v.integer("ID"));
@@ -368,10 +395,12 @@ KeywordSpec database_tprint_keyword() {
 
 KeywordSpec database_history_node_keyword() {
   return {.name = "DATABASE_HISTORY_NODE",
-          .options = kNoneOrId,
+          .options = kNoneOrIdOrSet,
           .handler = read_history_node,
           .cards = kHistoryCards,
-          .summary = "Nodes written to nodout.csv. _SET is not supported yet."};
+          .summary =
+              "Nodes written to nodout.csv (and tprint.csv): by id, by id with a heading "
+              "(_ID), or every node of node sets (_SET)."};
 }
 
 }  // namespace plyform::keyword

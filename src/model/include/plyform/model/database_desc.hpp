@@ -35,10 +35,12 @@ struct DatabaseAsciiDesc {
 
 /// *DATABASE_HISTORY_NODE (_ID): nodes written to nodout.csv.
 struct DatabaseHistoryNodeDesc {
-  std::vector<int> node_ids;              ///< in deck order
-  std::vector<std::string> headings;      ///< _ID: the HEADING of each node; empty otherwise
-  std::vector<SourceLocation> ids_where;  ///< the card line of each node id
-  SourceLocation where;                   ///< the keyword line
+  std::vector<int> node_ids;               ///< in deck order
+  std::vector<std::string> headings;       ///< _ID: the HEADING of each node; empty otherwise
+  std::vector<SourceLocation> ids_where;   ///< the card line of each node id
+  std::vector<int> set_ids;                ///< _SET: node set ids, in deck order
+  std::vector<SourceLocation> sets_where;  ///< the card line of each set id
+  SourceLocation where;                    ///< the keyword line
 };
 
 }  // namespace plyform::model
