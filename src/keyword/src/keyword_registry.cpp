@@ -92,6 +92,7 @@ KeywordSpec database_bndout_keyword();
 KeywordSpec database_spcforc_keyword();
 KeywordSpec control_accuracy_keyword();
 KeywordSpec control_bulk_viscosity_keyword();
+KeywordSpec control_adaptive_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
 KeywordSpec database_sleout_keyword();
@@ -172,6 +173,7 @@ std::span<const KeywordSpec> keyword_registry() {
       control_energy_keyword(),
       control_accuracy_keyword(),
       control_bulk_viscosity_keyword(),
+      control_adaptive_keyword(),
       control_output_keyword(),
       control_rigid_keyword(),
       control_hourglass_keyword(),

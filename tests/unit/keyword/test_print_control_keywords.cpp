@@ -146,3 +146,30 @@ TEST(InitialVelocityNode, ReadsEachNodesVelocities) {
 
 }  // namespace
 }  // namespace plyform::keyword
+
+namespace plyform::keyword {
+namespace {
+
+using namespace test;  // read_ok, expect_error
+
+// *CONTROL_ADAPTIVE and a part's ADPOPT: read, and warned about (the run keeps its mesh); the
+// cards after the first pass over whatever layout the LS-DYNA version gave them.
+TEST(ControlAdaptive, ReadAndWarnedAboutWithThePartsThatAskForIt) {
+  const ReadResult r = read_ok(
+      "*CONTROL_ADAPTIVE\n"
+      "     0.001       0.2         2         3       0.01.00000E20         0         1\n"
+      "       0.0         0         0       0.0       0.0         0         0         0\n"
+      "        -1                           0.0         0         0                    \n"
+      "       0.0         0         0         00                  0         0         0\n"
+      "*PART\nsheet\n1,1,1,0,0,0,1\n");
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_EQ(r.warnings[0].keyword, "*CONTROL_ADAPTIVE");
+  EXPECT_NE(r.warnings[0].message.find("initial mesh"), std::string::npos);
+  EXPECT_EQ(r.warnings[1].keyword, "*PART");
+  EXPECT_EQ(r.warnings[1].field, "ADPOPT");
+  ASSERT_EQ(r.model.parts.size(), 1u);
+  expect_error("*CONTROL_ADAPTIVE\nx\n", 2, "*CONTROL_ADAPTIVE", "ADPFREQ", "expected a real");
+}
+
+}  // namespace
+}  // namespace plyform::keyword

@@ -47,7 +47,8 @@ constexpr std::array kCard1Fields{
     FieldSpec{.name = "ADPOPT",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "adaptivity: must be 0 (not supported)"},
+              .description = "adaptive remeshing of the part: read and warned about (plyform "
+                             "keeps the initial mesh)"},
     FieldSpec{.name = "TMID",
               .type = FieldType::kInteger,
               .min_value = 0,
@@ -86,7 +87,12 @@ void read_part(KeywordInput& in) {
     part.thermal_material_id = v.integer("TMID");
     part.where = in.where(line->line);
     require_zero(in, line->line, "EOSID", part.eos_id, "an equation of state");
-    require_zero(in, line->line, "ADPOPT", part.adpopt, "adaptive remeshing");
+    if (part.adpopt != 0) {
+      in.warn(line->line, "ADPOPT",
+              "part " + std::to_string(part.id) + ": ADPOPT " + std::to_string(part.adpopt) +
+                  " asks for adaptive remeshing, which plyform does not do yet: the part keeps "
+                  "its initial mesh");
+    }
     in.model().parts.push_back(std::move(part));
   } while (has_more_cards(in));
 }
