@@ -142,12 +142,12 @@ TEST_F(RealDecks, MetalformingDeckReadsShellsMaterialsAndRigidTools) {
   EXPECT_EQ(result.model.rigid_motions[0].dof, 6);
   EXPECT_DOUBLE_EQ(result.model.rigid_motions[0].scale, -1.0);
   // What is left: keywords outside the subset (*CONTROL_ADAPSTEP,
-  // *INTERFACE_SPRINGBACK_LSDYNA; *CONTROL_ADAPTIVE is now read with a warning), *CONTROL_BULK_VISCOSITY's TYPE -1 (shells), *MAT_037's R
-  // from a curve, *CONTROL_SHELL's ESORT = 1 (sorting triangles
-  // to a C0 triangle) and *CONTROL_CONTACT's PENOPT = 4 (area-weighted slave stiffness), which
-  // plyform names rather than ignores (*CONTROL_ACCURACY and _OUTPUT now read, *DATABASE_MATSUM
-  // written). The four forming contacts read, with their optional cards B and C as LS-PrePost
-  // writes them (defaults, SNLOG 1, IGAP 1).
+  // *INTERFACE_SPRINGBACK_LSDYNA; *CONTROL_ADAPTIVE is now read with a warning),
+  // *CONTROL_BULK_VISCOSITY's TYPE -1 (shells), *MAT_037's R from a curve, *CONTROL_SHELL's ESORT =
+  // 1 (sorting triangles to a C0 triangle) and *CONTROL_CONTACT's PENOPT = 4 (area-weighted slave
+  // stiffness), which plyform names rather than ignores (*CONTROL_ACCURACY and _OUTPUT now read,
+  // *DATABASE_MATSUM written). The four forming contacts read, with their optional cards B and C as
+  // LS-PrePost writes them (defaults, SNLOG 1, IGAP 1).
   EXPECT_EQ(result.errors.size(), 6u);
   for (const Diagnostic& error : result.errors) {
     const bool unsupported_keyword = error.message.find("unsupported keyword") != std::string::npos;
