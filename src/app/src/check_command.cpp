@@ -252,6 +252,27 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
   // What the build made of each contact: the sides as slave nodes and master segments, with
   // their offsets and SOFT = 0 penalty (docs/contact.md).
   for (const core::ContactInterface& c : m.contacts) {
+    if (c.tiebreak.enabled()) {
+      const core::Tiebreak& tb = c.tiebreak;
+      const std::string ties = tb.ties_on_contact()
+                                   ? "nodes in contact at t = 0 and every node that touches later"
+                                   : "nodes in contact at t = 0";
+      const std::string holds =
+          tb.holds_tangential() ? "held normal and tangential"
+                                : (tb.sfls_is_friction_limit
+                                       ? fmt::format("held normal, sliding at SFLS {:g}", tb.sfls)
+                                       : std::string("held normal, sliding with FS"));
+      const std::string fails =
+          !tb.can_fail() ? "never fail"
+          : tb.holds_tangential()
+              ? fmt::format(
+                    "fail at (sigma_n / {:g})^2 + (tau / {:g})^2 = 1, then penalty "
+                    "contact with friction",
+                    tb.nfls, tb.sfls)
+              : fmt::format("fail at sigma_n = {:g}, then penalty contact with friction", tb.nfls);
+      fmt::print(out, "  contact {}: tiebreak OPTION {}: {} tie ({}), ties {}\n", c.id, tb.option,
+                 ties, holds, fails);
+    }
     for (std::size_t p = 0; p < c.passes.size(); ++p) {
       const core::ContactPass& cp = c.passes[p];
       const auto range = [](const std::vector<double>& v) {

@@ -7,6 +7,7 @@
 
 #include "plyform/contact/bucket_search.hpp"
 #include "plyform/contact/segment_projection.hpp"
+#include "plyform/contact/tiebreak.hpp"
 #include "plyform/core/invariant.hpp"
 #include "plyform/law/law.hpp"
 
@@ -120,6 +121,10 @@ struct PassRuntime {
   std::vector<signed char> slave_face_sign;  // per slave_face_index entry
   std::vector<double> rs, prev_rs;           // 3 per slave: its surface point minus the node
   std::vector<double> friction_heated;       // per slave: friction dissipation turned to heat
+  // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
+  std::vector<std::int8_t> tie_state;
+  std::vector<double> tie_gap0;
+  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data()}; }
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -208,6 +213,10 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->prev_seg.assign(ns, -1);
       pr->shape.assign(4 * ns, 0.0);
       pr->friction_heated.assign(ns, 0.0);
+      if (ci.tiebreak.enabled()) {
+        pr->tie_state.assign(ns, static_cast<std::int8_t>(TieState::free));
+        pr->tie_gap0.assign(ns, 0.0);
+      }
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
       pr->side.assign(ns, 0);
@@ -935,6 +944,29 @@ void init_nodal_normals(PassRuntime& pr, const double* packed) {
 
 }  // namespace
 
+// The _TIEBREAK option at t = 0: a slave node in contact (its surface gap, penetration or
+// opening, within 5 % of its segment's shorter diagonal, LS-DYNA's tolerance of tied contacts)
+// is tied where it is, so the mesh as given starts at rest.
+void tie_initial_contacts(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const TieArrays tie = pr.ties();
+  for (std::size_t k = 0; k < cp.slave_count(); ++k) {
+    const core::Index s = pr.seg[k];
+    if (s < 0)
+      continue;
+    const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
+    const auto dist = [&](core::Index a, core::Index b) {
+      const double *pa = at(packed, a), *pb = at(packed, b);
+      return std::hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]);
+    };
+    // A triangle (N3 = N4): its shortest edge at N1 stands in for the diagonal.
+    const double diagonal = q[2] == q[3] ? std::min(dist(q[0], q[1]), dist(q[0], q[2]))
+                                         : std::min(dist(q[0], q[2]), dist(q[1], q[3]));
+    if (std::abs(pr.gap[k]) <= 0.05 * diagonal)
+      tie_node(pr.hist, tie, k, pr.gap[k]);
+  }
+}
+
 void ContactSet::start(const double* packed) {
   for (auto& pp : passes_) {
     PassRuntime& pr = *pp;
@@ -944,6 +976,8 @@ void ContactSet::start(const double* packed) {
     const std::size_t ns = pr.pass->slave_count();
     measure(pr, 0.0, packed, nullptr, mass_, rigid_, rot_);
     pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
+    if (pr.iface->tiebreak.enabled())
+      tie_initial_contacts(pr, packed);
     // Initial penetrations of nodes that are not bonded: the penalty will push them out in
     // the first cycles (a jolt the user should know about).
     std::size_t count = 0;
@@ -955,6 +989,8 @@ void ContactSet::start(const double* packed) {
       if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact &&
           pr.iface->cohesive && pr.law.parameters().bond_tol >= -pr.gap[k])
         continue;  // bonded at t = 0 within BOND_TOL
+      if (!pr.tie_state.empty() && static_cast<TieState>(pr.tie_state[k]) == TieState::tied)
+        continue;  // tied where it is
       ++count;
       if (pr.gap[k] < deepest) {
         deepest = pr.gap[k];
@@ -1007,6 +1043,19 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 
     measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
     pr.measured = true;
+    if (!pr.tie_state.empty()) {
+      // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
+      // springs held is released.
+      for (std::size_t k = 0; k < ns; ++k) {
+        if (pr.seg[k] >= 0 || static_cast<TieState>(pr.tie_state[k]) != TieState::tied)
+          continue;
+        pr.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
+        pr.hist.e_damage[k] += pr.stored[k];
+        pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
+        pr.hist.beta[k] = 0.0;
+        pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
+      }
+    }
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.gap.data();
@@ -1038,7 +1087,12 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         *a += b;
       const law::BatchOutput co{pr.pressure.data() + b, pr.tau_x.data() + b, pr.tau_y.data() + b,
                                 pr.stored.data() + b};
-      pr.law.update_batch(ci, ch, co);
+      if (pr.tie_state.empty()) {
+        pr.law.update_batch(ci, ch, co);
+      } else {
+        const TieArrays tie = pr.ties();
+        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
+      }
     }
 
     // Forces from the tractions, and the second half of the step's work.
@@ -1304,6 +1358,8 @@ void ContactSet::visit_state(core::StateArchive& a) {
       }
     }
     a.fixed("friction_heated", std::span<double>(pr.friction_heated));
+    a.fixed("tie_state", std::span<std::int8_t>(pr.tie_state));
+    a.fixed("tie_gap0", std::span<double>(pr.tie_gap0));
     a.array("cand_start", pr.cand_start);
     a.array("cand", pr.cand);
     a.array("seg_radius", pr.seg_radius);

@@ -62,6 +62,7 @@ KeywordSpec boundary_prescribed_motion_node_keyword();
 KeywordSpec boundary_prescribed_motion_set_keyword();
 KeywordSpec boundary_prescribed_motion_rigid_keyword();
 KeywordSpec boundary_temperature_node_keyword();
+KeywordSpec contact_automatic_one_way_surface_to_surface_keyword();
 KeywordSpec boundary_temperature_set_keyword();
 KeywordSpec boundary_convection_set_keyword();
 KeywordSpec boundary_flux_set_keyword();
@@ -163,6 +164,7 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_radiation_set_keyword(),
       initial_velocity_generation_keyword(),
       initial_velocity_node_keyword(),
+      contact_automatic_one_way_surface_to_surface_keyword(),
       initial_temperature_node_keyword(),
       initial_temperature_set_keyword(),
       load_node_point_keyword(),

@@ -408,7 +408,18 @@ struct ContactBuilder {
         d.control_contact && d.control_contact->penopt > 0 ? d.control_contact->penopt : 1;
     const int nsbcs = d.control_contact ? d.control_contact->nsbcs : 0;
     const bool thkchg = d.control_contact && d.control_contact->thkchg == 1;
+    std::unordered_map<int, const model::ContactDesc*> first_with_id;
     for (const model::ContactDesc& c : d.contacts) {
+      if (c.id != 0) {
+        const auto [it, fresh] = first_with_id.emplace(c.id, &c);
+        if (!fresh) {
+          warnings.push_back(
+              {c.where, c.keyword, "CID",
+               fmt::format("contact {} is also the id of the contact at {}:{}: both act, and "
+                           "rcforc.csv and sleout.csv list both under that id (in deck order)",
+                           c.id, it->second->where.file, it->second->where.line)});
+        }
+      }
       core::ContactInterface ci;
       ci.id = c.id;
       ci.keyword = c.keyword;
@@ -417,7 +428,15 @@ struct ContactBuilder {
                 : c.kind == model::ContactKind::surface_to_surface ? core::ContactKind::two_way
                 : c.kind == model::ContactKind::forming_one_way_surface_to_surface
                     ? core::ContactKind::forming
+                : c.kind == model::ContactKind::automatic_one_way_surface_to_surface
+                    ? core::ContactKind::automatic_one_way
                     : core::ContactKind::automatic;
+      if (c.tiebreak) {
+        ci.tiebreak.option = c.tiebreak_option;
+        ci.tiebreak.nfls = c.nfls;
+        ci.tiebreak.sfls = c.sfls;
+        ci.tiebreak.sfls_is_friction_limit = c.tiebreak_option == 4 && c.param == 1.0;
+      }
       ci.penalty = c.soft == 1 ? core::PenaltyKind::mass : core::PenaltyKind::material;
       ci.sofscl = c.sofscl;
       ci.penopt = penopt;
@@ -452,6 +471,13 @@ struct ContactBuilder {
       for (const auto& u : d.user_interface_frictions)
         if (c.id != 0 && u.contact_id == c.id)
           uif = &u;
+      if (uif != nullptr && c.tiebreak) {
+        error(uif->where, "*USER_INTERFACE_FRICTION", "NOSID",
+              "contact " + std::to_string(c.id) + " (" + c.keyword +
+                  ") is a tiebreak contact: its interface law is the tiebreak; name a contact "
+                  "without _TIEBREAK to give it the cohesive law");
+        continue;
+      }
       if (uif != nullptr) {
         CohesiveLawBuild law = build_cohesive_law(d, *uif);
         if (!law.parameters) {
@@ -473,7 +499,8 @@ struct ContactBuilder {
       }
       // Rigid shells (tools) are offset only in automatic contacts or with SHLTHK = 2: a tool
       // mesh is the tool's surface.
-      const bool rigid_offset = ci.kind == core::ContactKind::automatic || shlthk == 2;
+      const bool rigid_offset = ci.kind == core::ContactKind::automatic ||
+                                ci.kind == core::ContactKind::automatic_one_way || shlthk == 2;
       std::vector<Index> slave_only, master_only;
       auto slave = side_surface(c, c.sstyp, c.ssid, "SSID", slave_only);
       auto master = side_surface(c, c.mstyp, c.msid, "MSID", master_only);

@@ -191,10 +191,16 @@ std::vector<Diagnostic> validate_contact(const model::ModelDesc& model) {
     check_segments(s, t.nodes, errors);
   }
 
+  // Contact ids need not be unique (LS-PrePost writes the same CID on copies of a contact, and
+  // build_contacts warns); only an id a *USER_INTERFACE_FRICTION names must say which contact.
   IdTable contacts("contact", "*CONTACT_..._ID");
+  std::vector<keyword::Diagnostic> duplicates;
+  std::unordered_map<int, int> named;
+  for (const model::UserInterfaceFrictionDesc& u : model.user_interface_frictions)
+    named[u.contact_id] = 1;
   for (const model::ContactDesc& c : model.contacts) {
     if (c.id != 0) {
-      contacts.add(c.id, c.where, "CID", errors, c.keyword);
+      contacts.add(c.id, c.where, "CID", named.contains(c.id) ? errors : duplicates, c.keyword);
     }
     check_contact_side(c, true, t, errors);
     check_contact_side(c, false, t, errors);

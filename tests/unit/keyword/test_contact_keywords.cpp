@@ -164,10 +164,55 @@ TEST(Contact, FieldsPlyformDoesNotImplementAreNamed) {
 
 TEST(Contact, OtherContactOptionsAreUnsupportedKeywords) {
   const ReadResult r =
-      read_deck_text("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_ID\n1\n1,2,3,3\n", "deck.k");
+      read_deck_text("*CONTACT_SURFACE_TO_SURFACE_TIEBREAK_ID\n1\n1,2,3,3\n", "deck.k");
   ASSERT_EQ(r.errors.size(), 1u) << all_errors(r);
   EXPECT_EQ(r.errors[0].where.line, 1);
   EXPECT_NE(r.errors[0].message.find("unsupported option _TIEBREAK_ID"), std::string::npos);
+}
+
+// --- _TIEBREAK of the automatic contacts
+
+TEST(ContactTiebreak, TheCardAfterCard3IsRead) {
+  const ReadResult r = read_ok(
+      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_ID\n"
+      "         4tiebreak contact\n"
+      "        13        11         3         3         0         0         0         0\n"
+      "       0.2       0.1       0.0       0.0       0.0         0       0.01.00000E20\n"
+      "       1.0       1.0       0.0       0.0       1.0       1.0       1.0       1.0\n"
+      "         2      25.0      40.0       0.0       0.0       0.0       0.0       0.0\n"
+      "*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK\n"
+      "1,2,3,3\n\n\n4,12.5,3.0,1.0\n"
+      "*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_ID\n5\n1,2,3,3\n");
+  ASSERT_EQ(r.model.contacts.size(), 3u);
+  const model::ContactDesc& a = r.model.contacts[0];
+  EXPECT_EQ(a.kind, ContactKind::automatic_surface_to_surface);
+  EXPECT_TRUE(a.tiebreak);
+  EXPECT_EQ(a.tiebreak_option, 2);
+  EXPECT_DOUBLE_EQ(a.nfls, 25.0);
+  EXPECT_DOUBLE_EQ(a.sfls, 40.0);
+  EXPECT_DOUBLE_EQ(a.fs, 0.2);
+  EXPECT_EQ(a.tiebreak_card.line, 6);
+  const model::ContactDesc& b = r.model.contacts[1];
+  EXPECT_EQ(b.kind, ContactKind::automatic_one_way_surface_to_surface);
+  EXPECT_EQ(b.tiebreak_option, 4);
+  EXPECT_DOUBLE_EQ(b.param, 1.0);
+  EXPECT_FALSE(r.model.contacts[2].tiebreak);
+  EXPECT_EQ(r.model.contacts[2].id, 5);
+}
+
+TEST(ContactTiebreak, OptionsAndFieldsPlyformDoesNotImplementAreNamed) {
+  constexpr std::string_view kKw = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK";
+  const std::string head = std::string(kKw) + "\n1,2,3,3\n\n\n";
+  expect_error(head + "6,10,10,0.5\n", 5, kKw, "OPTION", "damage (5, 6, 8, 13, 14)");
+  expect_error(head + "9,10,10\n", 5, kKw, "OPTION", "discrete-crack");
+  expect_error(head + "-1,10,10\n", 5, kKw, "OPTION", "moment-transferring");
+  expect_error(head + "2,0,10\n", 5, kKw, "NFLS", "give NFLS > 0");
+  expect_error(head + "3,10\n", 5, kKw, "SFLS", "give SFLS > 0");
+  expect_error(head + "4,10,0,1\n", 5, kKw, "SFLS", "friction limit SFLS > 0");
+  expect_error(head + "4,10,0,2\n", 5, kKw, "PARAM", "OPTION 4 takes 0");
+  expect_error(head + "2,10,10,1\n", 5, kKw, "PARAM", "shell offsets ignored");
+  expect_error(head + "2,10,10,0,1.0\n", 5, kKw, "ERATEN", "discrete-crack");
+  expect_error(std::string(kKw) + "\n1,2,3,3\n", 1, kKw, "", "_TIEBREAK needs its card");
 }
 
 // --- *SET_SEGMENT

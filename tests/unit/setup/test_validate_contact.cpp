@@ -66,7 +66,8 @@ TEST(ValidateContact, ContactIdsAndSides) {
            "*CONTACT_SURFACE_TO_SURFACE\n9,31,3,0\n"                 // 44-45: SSID, MSID
            "*CONTACT_SURFACE_TO_SURFACE\n30,10,2,2\n"                // 46-47: SSID, MSID
            "*CONTACT_SURFACE_TO_SURFACE_ID\n0\n11,2,4,3\n*CONTACT_SURFACE_TO_SURFACE_ID\n0\n10,2,4,"
-           "3\n"));
+           "3\n"
+           "*USER_INTERFACE_FRICTION\n5,0\n"));  // names contact 5: it must be unique
   ASSERT_EQ(errors.size(), 8u) << all(errors);
   EXPECT_EQ(errors[0].to_string(),
             "deck.k:41: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID: field CID: contact 5 is already "
@@ -87,6 +88,15 @@ TEST(ValidateContact, ContactIdsAndSides) {
   EXPECT_EQ(errors[6].field, "MSID");   // part set 10 (a node set id)
   EXPECT_EQ(errors[7].where.line, 50);  // node set 11; CID 0 twice is no duplicate
   EXPECT_NE(errors[7].message.find("node set 11 is not defined"), std::string::npos);
+}
+
+// LS-PrePost writes copies of a contact with the same CID: that is no error unless a
+// *USER_INTERFACE_FRICTION names the id (build_contacts warns about the repeat).
+TEST(ValidateContact, RepeatedContactIdsAreAcceptedUnlessALawNamesThem) {
+  const std::vector<Diagnostic> errors =
+      validate_text(deck("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID\n5\n1,2,3,3\n"
+                         "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID\n5\n2,1,3,3\n"));
+  EXPECT_TRUE(errors.empty()) << all(errors);
 }
 
 TEST(ValidateContact, SegmentSets) {

@@ -1,8 +1,10 @@
 // *CONTACT_ONE_WAY_SURFACE_TO_SURFACE, *CONTACT_SURFACE_TO_SURFACE,
-// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE and *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, each
-// with _ID or _TITLE (the ID card first). Cards 1-3 and optional card A, as LS-DYNA lays them
-// out; cards 2, 3 and A may be left out at the end of the keyword (defaults). Fields plyform does
-// not implement must keep their defaults: each other value is an error naming the field.
+// *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE, *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and
+// *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE, each with _ID or _TITLE (the ID card first), the
+// automatic ones also with _TIEBREAK (its card right after card 3). Cards 1-3 and optional card A,
+// as LS-DYNA lays them out; cards 2, 3 and A may be left out at the end of the keyword (defaults).
+// Fields plyform does not implement must keep their defaults: each other value is an error naming
+// the field.
 
 #include <array>
 #include <utility>
@@ -15,6 +17,11 @@ namespace {
 
 constexpr std::array<std::string_view, 6> kContactOptions{"",        "ID",         "TITLE",
                                                           "THERMAL", "THERMAL_ID", "THERMAL_TITLE"};
+// The automatic contacts also come as LS-DYNA's built-in tiebreak (the alternative to the
+// cohesive law that the seed paper names).
+constexpr std::array<std::string_view, 9> kAutomaticOptions{
+    "",         "ID",          "TITLE",         "THERMAL", "THERMAL_ID", "THERMAL_TITLE",
+    "TIEBREAK", "TIEBREAK_ID", "TIEBREAK_TITLE"};
 
 constexpr std::array kSlaveTypes{0, 2, 3, 4};
 constexpr std::array kMasterTypes{0, 2, 3};
@@ -341,6 +348,96 @@ constexpr std::array kCards{
 };
 constexpr std::size_t kThermalCardIndex = 8;
 
+constexpr std::array kTiebreakOptions{1, 2, 3, 4};
+constexpr std::array kTiebreakCard{
+    FieldSpec{.name = "OPTION",
+              .type = FieldType::kInteger,
+              .default_value = 1,
+              .unit = "-",
+              .description = "1: nodes in contact at t = 0 and nodes that come into contact are "
+                             "tied for good (normal and tangential); 2: nodes in contact at t = 0 "
+                             "are tied until (sigma_n / NFLS)^2 + (tau / SFLS)^2 >= 1, then "
+                             "frictional contact; 3: as 1, with the failure of 2; 4: as 2 with "
+                             "frictional sliding while tied and the normal criterion "
+                             "sigma_n >= NFLS only. A failed node never ties again",
+              .allowed = kTiebreakOptions,
+              .allowed_note = "the moment-transferring (-1 to -3), damage (5, 6, 8, 13, 14) and "
+                              "discrete-crack (7, 9-11) options are not supported; the cohesive "
+                              "law (*USER_INTERFACE_FRICTION) is plyform's damage model"},
+    FieldSpec{.name = "NFLS",
+              .min_value = 0.0,
+              .unit = "stress",
+              .description = "normal (tensile) failure stress; required (> 0) by OPTION 2-4"},
+    FieldSpec{.name = "SFLS",
+              .min_value = 0.0,
+              .unit = "stress",
+              .description = "shear failure stress, required (> 0) by OPTION 2 and 3; with "
+                             "OPTION 4 and PARAM = 1 the frictional stress limit"},
+    FieldSpec{.name = "PARAM",
+              .unit = "-",
+              .description = "OPTION 4: 1 makes SFLS the frictional stress limit (independent "
+                             "of the normal stress); other options: must be 0"},
+    default_only("ERATEN", FieldType::kReal,
+                 "normal energy release rate (OPTION 7, 9-11 only): must be 0"),
+    default_only("ERATES", FieldType::kReal,
+                 "shear energy release rate (OPTION 7, 9-11 only): must be 0"),
+    default_only("CT2CN", FieldType::kReal,
+                 "tangential to normal stiffness ratio (OPTION 9, 11 only): must be 0"),
+    default_only("CN", FieldType::kReal, "normal stiffness (OPTION 9, 11, 13, 14 only): must be 0"),
+};
+constexpr CardSpec kTiebreakCardSpec{
+    .title = "Tiebreak card",
+    .fields = kTiebreakCard,
+    .presence =
+        "with _TIEBREAK only: required, right after card 3 (cards 2 and 3 must then be "
+        "given)"};
+constexpr std::array kAutomaticCards{
+    kCards[0], kCards[1], kCards[2], kCards[3], kCards[4],
+    kCards[5], kCards[6], kCards[7], kCards[8], kTiebreakCardSpec,
+};
+
+/// The tiebreak card: what each OPTION needs, and PARAM only where it means something.
+void read_tiebreak_card(KeywordInput& in, model::ContactDesc& c) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "",
+            "_TIEBREAK needs its card (OPTION NFLS SFLS PARAM ...) after cards 2 and 3");
+  }
+  const CardValues v = in.read(kTiebreakCardSpec, *line);
+  c.tiebreak = true;
+  c.tiebreak_card = in.where(line->line);
+  c.tiebreak_option = static_cast<int>(v.integer("OPTION"));
+  c.nfls = v.real("NFLS");
+  c.sfls = v.real("SFLS");
+  c.param = v.real("PARAM");
+  for (const std::string_view f : {"ERATEN", "ERATES", "CT2CN", "CN"})
+    require_zero(in, line->line, f, v.real(f), "a field of the discrete-crack options");
+  const int o = c.tiebreak_option;
+  if (o >= 2 && c.nfls <= 0.0) {
+    in.fail(line->line, "NFLS",
+            fmt::format("OPTION {} fails a tie at the normal stress NFLS: give NFLS > 0", o));
+  }
+  if ((o == 2 || o == 3) && c.sfls <= 0.0) {
+    in.fail(line->line, "SFLS",
+            fmt::format("OPTION {} fails a tie at the shear stress SFLS: give SFLS > 0", o));
+  }
+  if (o == 4 && c.param != 0.0 && c.param != 1.0) {
+    in.fail(line->line, "PARAM",
+            fmt::format("PARAM = {}: OPTION 4 takes 0 (Coulomb friction while tied) or 1 (SFLS "
+                        "is the frictional stress limit)",
+                        c.param));
+  }
+  if (o == 4 && c.param == 1.0 && c.sfls <= 0.0) {
+    in.fail(line->line, "SFLS", "OPTION 4 with PARAM = 1 needs the friction limit SFLS > 0");
+  }
+  if (o != 4 && c.param != 0.0) {
+    in.fail(line->line, "PARAM",
+            fmt::format("PARAM = {}: with OPTION {} plyform reads PARAM only at 0 (OPTION 2's "
+                        "PARAM = 1, shell offsets ignored, is not supported)",
+                        c.param, o));
+  }
+}
+
 /// Optional cards B-D: every field must keep its default (the table says which values count).
 void read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& line) {
   const CardValues v = in.read(card, line);
@@ -359,6 +456,7 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   c.where = in.keyword_where();
   const std::string_view option = in.option();
   c.thermal = option.starts_with("THERMAL");
+  const bool tiebreak = option.starts_with("TIEBREAK");
   if (option.ends_with("ID") || option.ends_with("TITLE")) {
     const CardValues id = in.next_card(kCards[0], "ID card (CID HEADING)");
     c.id = id.integer("CID");
@@ -410,6 +508,9 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     c.sfmt = zero_means(c3.real("SFMT"), 1.0);
     c.fsf = zero_means(c3.real("FSF"), 1.0);
     c.vsf = zero_means(c3.real("VSF"), 1.0);
+  }
+  if (tiebreak) {
+    read_tiebreak_card(in, c);
   }
   if (c.thermal) {
     const auto line_t = in.next_line();
@@ -507,12 +608,12 @@ KeywordSpec contact_forming_one_way_surface_to_surface_keyword() {
 
 KeywordSpec contact_automatic_surface_to_surface_keyword() {
   return {.name = "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE",
-          .options = kContactOptions,
+          .options = kAutomaticOptions,
           .handler =
               [](KeywordInput& in) {
                 read_contact(in, model::ContactKind::automatic_surface_to_surface);
               },
-          .cards = kCards,
+          .cards = kAutomaticCards,
           .summary =
               "Penalty contact both ways (LS-DYNA's automatic contact), with the cards "
               "and rules of *CONTACT_SURFACE_TO_SURFACE. SSID/MSID name the slave and "
@@ -520,7 +621,25 @@ KeywordSpec contact_automatic_surface_to_surface_keyword() {
               "part, 4 node set (slave side only); 0 (all) is an error. Cards 2, 3 and "
               "optional cards A-D may be left out at the end (B-D only at LS-DYNA's "
               "defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves are "
-              "errors."};
+              "errors. _TIEBREAK: LS-DYNA's built-in tiebreak (OPTION 1-4), its card right "
+              "after card 3 (docs/contact.md)."};
+}
+
+KeywordSpec contact_automatic_one_way_surface_to_surface_keyword() {
+  return {.name = "CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE",
+          .options = kAutomaticOptions,
+          .handler =
+              [](KeywordInput& in) {
+                read_contact(in, model::ContactKind::automatic_one_way_surface_to_surface);
+              },
+          .cards = kAutomaticCards,
+          .summary =
+              "Penalty contact of the slave nodes against the master segments (one way), "
+              "shell surfaces offset by half their thickness on both sides (rigid tools "
+              "included), as LS-DYNA's automatic contacts; the cards and rules of "
+              "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE. With _TIEBREAK it is the one-way "
+              "tiebreak that can stand in for a cohesive interface (*USER_INTERFACE_FRICTION "
+              "may name it, without _TIEBREAK)."};
 }
 
 }  // namespace plyform::keyword

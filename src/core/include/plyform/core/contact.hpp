@@ -15,10 +15,11 @@
 namespace plyform::core {
 
 enum class ContactKind : int {
-  one_way,    ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
-  two_way,    ///< *CONTACT_SURFACE_TO_SURFACE
-  forming,    ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
-  automatic,  ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
+  one_way,            ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
+  two_way,            ///< *CONTACT_SURFACE_TO_SURFACE
+  forming,            ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
+  automatic,          ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
+  automatic_one_way,  ///< *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE
 };
 
 /// How the penalty stiffness is found (SOFT of the contact).
@@ -95,6 +96,24 @@ struct ContactHeatLink {
   const ContactHeat* heat = nullptr;
 };
 
+/// LS-DYNA's built-in tiebreak (the _TIEBREAK option of the automatic contacts), instead of the
+/// cohesive law: a tied slave node is held to its point of the master surface by the penalty
+/// springs, in tension as in compression, until a stress criterion fails it; from then on it is
+/// an ordinary penalty-Coulomb contact node and never ties again. docs/contact.md.
+struct Tiebreak {
+  int option = 0;  ///< 0: no tiebreak; 1-4 as LS-DYNA's OPTION
+  double nfls = 0.0;
+  double sfls = 0.0;
+  bool sfls_is_friction_limit = false;  ///< OPTION 4, PARAM = 1
+  [[nodiscard]] bool enabled() const { return option > 0; }
+  /// Nodes that come into contact later tie too (OPTION 1 and 3).
+  [[nodiscard]] bool ties_on_contact() const { return option == 1 || option == 3; }
+  /// A stress criterion fails the tie (OPTION 2-4).
+  [[nodiscard]] bool can_fail() const { return option >= 2; }
+  /// Tangential motion is held while tied (OPTION 1-3); OPTION 4 lets the node slide.
+  [[nodiscard]] bool holds_tangential() const { return option != 4; }
+};
+
 struct ContactInterface {
   GlobalId id = 0;      ///< CID of the deck (0 when the deck gave none)
   std::string keyword;  ///< the *CONTACT_ keyword, for messages
@@ -108,6 +127,7 @@ struct ContactInterface {
   double birth = 0.0;
   double death = 1e20;
   bool cohesive = false;  ///< the law has adhesion (a *USER_INTERFACE_FRICTION names it)
+  Tiebreak tiebreak;      ///< the _TIEBREAK option (the law is then penalty-Coulomb)
   ContactHeat heat;       ///< the _THERMAL option
   law::Parameters law;    ///< the interface law (cohesive, or penalty-Coulomb)
 };

@@ -10,10 +10,11 @@ namespace plyform::model {
 
 /// The *CONTACT_ keywords plyform reads (all with the _ID option).
 enum class ContactKind {
-  one_way_surface_to_surface,          ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
-  surface_to_surface,                  ///< *CONTACT_SURFACE_TO_SURFACE (two-way)
-  forming_one_way_surface_to_surface,  ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
-  automatic_surface_to_surface,        ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (two-way)
+  one_way_surface_to_surface,            ///< *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
+  surface_to_surface,                    ///< *CONTACT_SURFACE_TO_SURFACE (two-way)
+  forming_one_way_surface_to_surface,    ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
+  automatic_surface_to_surface,          ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (two-way)
+  automatic_one_way_surface_to_surface,  ///< *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE
 };
 
 /// What SSID / MSID name (LS-DYNA's SSTYP / MSTYP codes).
@@ -59,6 +60,13 @@ struct ContactDesc {
   double sofscl = 0.1;    ///< SOFSCL: scale factor of the SOFT = 1 stiffness
   double maxpar = 1.025;  ///< MAXPAR: parametric extension of a segment for the projection
   int bsort = 0;          ///< BSORT: cycles between bucket sorts (0: automatic)
+  // The tiebreak card (the _TIEBREAK option, right after card 3): docs/contact.md.
+  bool tiebreak = false;
+  int tiebreak_option = 0;       ///< OPTION: 1-4 (the others are rejected by the reader)
+  double nfls = 0.0;             ///< NFLS: normal failure stress (tension)
+  double sfls = 0.0;             ///< SFLS: shear failure stress (OPTION 4, PARAM 1: friction limit)
+  double param = 0.0;            ///< PARAM: OPTION 4 only, 1 = SFLS is a frictional stress limit
+  SourceLocation tiebreak_card;  ///< the line of the tiebreak card
   // Thermal card (the _THERMAL option): heat across the interface (docs/thermal.md).
   bool thermal = false;
   double k = 0.0;        ///< K: conductivity of the gap medium (h = K / gap across an open gap)
