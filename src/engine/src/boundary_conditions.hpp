@@ -1,6 +1,7 @@
 #pragma once
 // Constraints and prescribed motions applied to the half-step velocities, and nodal loads.
 
+#include <array>
 #include <vector>
 
 #include "plyform/core/model.hpp"
@@ -16,11 +17,18 @@ class BoundaryConditions {
   /// the others stay 0).
   void loads(double t, NodalState& s) const;
 
-  /// Imposes constraints on the velocities of the step [t, t + dt] (t = t_n, displacement u at
-  /// t_n); `old` are the previous half-step velocities (x, y, z), `dt_avg` the interval between
-  /// the two half steps (for prescribed accelerations).
-  void constrain(double t, double dt, double dt_avg, const double* const old[3],
-                 NodalState& s) const;
+  /// The step whose velocities are constrained: [t, t + dt], after the step [t - dt_prev, t]
+  /// (dt_prev = 0 at t = 0); dt_avg is the interval between the two half steps.
+  struct StepTimes {
+    double t = 0.0;
+    double dt_prev = 0.0;
+    double dt = 0.0;
+    double dt_avg = 0.0;
+  };
+
+  /// Imposes constraints on the velocities of the step [t, t + dt] (displacement u at t);
+  /// `old` are the previous half-step velocities (x, y, z), for prescribed accelerations.
+  void constrain(const StepTimes& step, const double* const old[3], NodalState& s) const;
 
   /// True for (node, direction) pairs whose velocity is imposed (reactions are computed there).
   [[nodiscard]] const std::vector<unsigned char>& constrained() const { return constrained_; }

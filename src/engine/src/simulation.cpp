@@ -130,8 +130,8 @@ struct Simulation::State {
   bool fixed_step = false;  // no deformable element: DTINIT is the step
   double tssfac = 0.9;
   double end_time = 0.0;
-  double eps_t = 0.0;  // tolerance of the output and end times
-  std::vector<std::pair<core::Index, unsigned>> fixed_rotations;
+  double eps_t = 0.0;                            // tolerance of the output and end times
+  std::vector<core::FixedDofs> fixed_rotations;  // the SPCs (and TC/RC) that fix a rotation
   std::vector<double> contact_inertia;
   bool set_up = false;  // the set-up at t = 0 succeeded (else res says why)
 
@@ -419,7 +419,7 @@ void Simulation::State::set_up_run() {
   old_wz.assign(rotations ? n : 0, 0.0);
   for (const core::FixedDofs& f : model.fixed) {
     if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
-      fixed_rotations.push_back({f.node, f.dofs});
+      fixed_rotations.push_back(f);
   }
   // t = 0: the first half step is dt/2 and the velocities at t_0 are the initial ones (w = 0).
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
@@ -709,7 +709,7 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
     const auto i = static_cast<std::size_t>(constrained_nodes[k]);
     free_v[k] = {s.vx[i], s.vy[i], s.vz[i]};
   }
-  bc.constrain(t_now, dt_next, dt_avg, old, s);
+  bc.constrain({.t = t_now, .dt_prev = dt_prev, .dt = dt_next, .dt_avg = dt_avg}, old, s);
   double prev_ext = 0.0, next_ext = 0.0;  // constrained nodes, in order
   for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
     const auto i = static_cast<std::size_t>(constrained_nodes[k]);
@@ -771,14 +771,23 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
 }
 
 // Rotations (shell nodes): the velocity pass integrates them (w_{n+3/2} = w_{n+1/2} -
-// I^-1 m dt_avg); here fixed rotations are zeroed (their reaction moments do no work).
+// I^-1 m dt_avg); here fixed rotations are zeroed, about global axes or, for an SPC in a
+// local system, about its fixed local axes (their reaction moments do no work).
 void Simulation::State::fix_rotations() {
-  for (const auto& [node, dofs] : fixed_rotations) {
-    const auto i = static_cast<std::size_t>(node);
+  for (const core::FixedDofs& f : fixed_rotations) {
+    const auto i = static_cast<std::size_t>(f.node);
     double* w[3] = {&s.wx[i], &s.wy[i], &s.wz[i]};
-    for (int d = 0; d < 3; ++d) {
-      if (dofs & (core::dof_rx << d))
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (!(f.dofs & (core::dof_rx << d)))
+        continue;
+      if (!f.local) {
         *w[d] = 0.0;
+        continue;
+      }
+      const std::array<double, 3>& e = f.axes[d];
+      const double about = *w[0] * e[0] + *w[1] * e[1] + *w[2] * e[2];
+      for (std::size_t k = 0; k < 3; ++k)
+        *w[k] -= about * e[k];
     }
   }
 }

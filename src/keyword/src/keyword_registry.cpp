@@ -15,6 +15,8 @@ KeywordSpec include_keyword();
 KeywordSpec include_path_keyword();
 KeywordSpec parameter_keyword();
 KeywordSpec define_curve_keyword();
+KeywordSpec define_coordinate_system_keyword();
+KeywordSpec define_coordinate_vector_keyword();
 KeywordSpec define_table_keyword();
 KeywordSpec user_interface_friction_keyword();
 KeywordSpec node_keyword();
@@ -52,6 +54,10 @@ KeywordSpec set_part_list_keyword();
 KeywordSpec set_node_keyword();
 KeywordSpec set_part_keyword();
 KeywordSpec set_segment_keyword();
+KeywordSpec set_node_generate_keyword();
+KeywordSpec set_node_list_generate_keyword();
+KeywordSpec set_part_generate_keyword();
+KeywordSpec set_part_list_generate_keyword();
 KeywordSpec contact_one_way_surface_to_surface_keyword();
 KeywordSpec contact_surface_to_surface_keyword();
 KeywordSpec contact_forming_one_way_surface_to_surface_keyword();
@@ -111,6 +117,8 @@ std::span<const KeywordSpec> keyword_registry() {
       include_path_keyword(),
       parameter_keyword(),
       define_curve_keyword(),
+      define_coordinate_system_keyword(),
+      define_coordinate_vector_keyword(),
       define_table_keyword(),
       user_interface_friction_keyword(),
       node_keyword(),
@@ -148,6 +156,10 @@ std::span<const KeywordSpec> keyword_registry() {
       set_node_keyword(),
       set_part_keyword(),
       set_segment_keyword(),
+      set_node_generate_keyword(),
+      set_node_list_generate_keyword(),
+      set_part_generate_keyword(),
+      set_part_list_generate_keyword(),
       contact_one_way_surface_to_surface_keyword(),
       contact_surface_to_surface_keyword(),
       contact_forming_one_way_surface_to_surface_keyword(),

@@ -296,6 +296,9 @@ struct Builder {
   }
 
   void boundary_conditions() {
+    std::unordered_map<int, const model::CoordinateSystemDesc*> systems;
+    for (const model::CoordinateSystemDesc& c : d.coordinate_systems)
+      systems.emplace(c.id, &c);
     for (const model::BoundarySpcDesc& s : d.spcs) {
       unsigned dofs = 0;
       for (int k = 0; k < 6; ++k) {
@@ -304,8 +307,26 @@ struct Builder {
       }
       if (dofs == 0)
         continue;
-      for (Index n : targets(s.target, s.target_id))
-        m.fixed.push_back({n, dofs});
+      core::FixedDofs fixed{.dofs = dofs};
+      if (s.cid != 0) {
+        // The reader checks the axes and validate the id; a local system whose axes are the
+        // global ones still takes the projection path (same result, no special case).
+        const auto system = systems.find(s.cid);
+        const auto axes =
+            system == systems.end() ? std::nullopt : model::coordinate_axes(*system->second);
+        if (!axes) {
+          error(s.where,
+                s.target == model::NodeTarget::kNode ? "*BOUNDARY_SPC_NODE" : "*BOUNDARY_SPC_SET",
+                "CID", "coordinate system " + std::to_string(s.cid) + " has no valid axes");
+          continue;
+        }
+        fixed.local = true;
+        fixed.axes = *axes;
+      }
+      for (Index n : targets(s.target, s.target_id)) {
+        fixed.node = n;
+        m.fixed.push_back(fixed);
+      }
     }
     for (const model::PrescribedMotionDesc& p : d.prescribed_motions) {
       if (p.vad < 0 || p.vad > 2) {
@@ -316,7 +337,9 @@ struct Builder {
       for (Index n : targets(p.target, p.target_id)) {
         core::PrescribedMotion pm;
         pm.node = n;
-        pm.direction = p.dof - 1;
+        // DOF 1-3 translations, 9-11 turning about an offset axis (directions 3-5).
+        pm.direction = p.dof <= 3 ? p.dof - 1 : p.dof - 6;
+        pm.axis = {p.offset1, p.offset2};
         pm.kind = p.vad == 0   ? core::MotionKind::velocity
                   : p.vad == 1 ? core::MotionKind::acceleration
                                : core::MotionKind::displacement;

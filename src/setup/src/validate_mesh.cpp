@@ -225,6 +225,13 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   for (const model::SetListDesc& s : model.part_sets) {
     part_sets.add(s.id, s.where, "SID", errors);
   }
+  // *DEFINE_COORDINATE_SYSTEM and _VECTOR share one id range.
+  IdTable coordinate_systems("coordinate system", "*DEFINE_COORDINATE_SYSTEM or _VECTOR");
+  for (const model::CoordinateSystemDesc& c : model.coordinate_systems) {
+    coordinate_systems.add(
+        c.id, c.where, "CID", errors,
+        c.from_vectors ? "*DEFINE_COORDINATE_VECTOR" : "*DEFINE_COORDINATE_SYSTEM");
+  }
   IdTable curves("curve", "*DEFINE_CURVE");
   // Duplicate curves are reported by setup::validate.
   for (const model::CurveDesc& c : model.curves) {
@@ -364,6 +371,8 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   };
   for (const model::BoundarySpcDesc& s : model.spcs) {
     check_target(s.target, s.target_id, s.where, spc_keyword(s.target));
+    if (s.cid != 0)
+      check_ref(coordinate_systems, s.cid, s.where, spc_keyword(s.target), "CID", errors);
   }
   for (const model::PrescribedMotionDesc& m : model.prescribed_motions) {
     check_target(m.target, m.target_id, m.where, motion_keyword(m.target));

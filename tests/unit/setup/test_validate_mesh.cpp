@@ -112,6 +112,23 @@ TEST(ValidateMesh, UndefinedReferencesAreAllReported) {
   EXPECT_EQ(errors.size(), 19u) << text;  // 7 undefined element nodes among them
 }
 
+TEST(ValidateMesh, CoordinateSystemsOfSpcs) {
+  const std::vector<Diagnostic> errors = validate_text(
+      "*NODE\n1,0,0,0\n"                                   // 2
+      "*DEFINE_COORDINATE_SYSTEM\n5,0,0,0,1,0,0\n0,1,0\n"  // 4
+      "*DEFINE_COORDINATE_VECTOR\n5,1,0,0,0,1,0\n"         // 7: 5 again
+      "*DEFINE_COORDINATE_VECTOR\n6,1,0,0,0,1,0\n"         // 9: named by nothing, kept
+      "*BOUNDARY_SPC_NODE\n1,5,1\n1,8,0,1\n");             // 11, 12: system 8 undefined
+  const std::string text = all(errors);
+  ASSERT_EQ(errors.size(), 2u) << text;
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:7: *DEFINE_COORDINATE_VECTOR: field CID: coordinate system 5 is already "
+            "defined at deck.k:4");
+  EXPECT_EQ(errors[1].to_string(),
+            "deck.k:12: *BOUNDARY_SPC_NODE: field CID: coordinate system 8 is not defined (no "
+            "*DEFINE_COORDINATE_SYSTEM or _VECTOR with this id)");
+}
+
 TEST(ValidateMesh, RepeatedNodeOutsideTheDegeneratePatterns) {
   std::string deck(kGoodDeck);
   deck += "*ELEMENT_SOLID\n7,1,1,2,3,4,5,6,2,8\n8,1,1,1,3,4,5,6,7,8\n9,1,1,2,3,4,5,5,6,7\n";

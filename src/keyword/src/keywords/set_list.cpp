@@ -1,5 +1,10 @@
-// *SET_NODE_LIST(_TITLE), *SET_PART_LIST(_TITLE) and *SET_SEGMENT(_TITLE).
+// *SET_NODE_LIST(_TITLE), *SET_PART_LIST(_TITLE), their _GENERATE forms and
+// *SET_SEGMENT(_TITLE).
+#include "set_list.hpp"
+
+#include <algorithm>
 #include <array>
+#include <unordered_set>
 
 #include "../keyword_registry.hpp"
 #include "common_cards.hpp"
@@ -86,6 +91,30 @@ constexpr std::array kSegmentCards{
              .presence = "one segment per card, until the next keyword"},
 };
 
+constexpr FieldSpec range_end(std::string_view name, std::string_view description) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .min_value = 0,
+                   .unit = "-",
+                   .description = description};
+}
+constexpr std::string_view kBeginText = "first id of a range (blank or 0 with its end: none)";
+constexpr std::string_view kEndText = "last id of the range (>= its first)";
+constexpr std::array kRangeFields{
+    range_end("B1BEG", kBeginText), range_end("B1END", kEndText),   range_end("B2BEG", kBeginText),
+    range_end("B2END", kEndText),   range_end("B3BEG", kBeginText), range_end("B3END", kEndText),
+    range_end("B4BEG", kBeginText), range_end("B4END", kEndText),
+};
+constexpr std::string_view kRangePresence =
+    "four ranges per card, until the next keyword (on later cards the ranges are numbered on: "
+    "B5BEG ...)";
+constexpr std::array kNodeGenerateCards{
+    CardSpec{.title = "Title card", .fields = kTitleCardFields, .presence = "with _TITLE only"},
+    CardSpec{.title = "Card 1", .fields = kCard1Fields, .presence = "required"},
+    CardSpec{.title = "Range cards", .fields = kRangeFields, .presence = kRangePresence},
+};
+constexpr std::array kPartGenerateCards = kNodeGenerateCards;
+
 /// The title card of _TITLE and card 1 (SID DA1..DA4 SOLVER; MECH only) of every set.
 model::SetListDesc read_set_header(KeywordInput& in, std::span<const CardSpec> cards) {
   model::SetListDesc set;
@@ -104,6 +133,7 @@ model::SetListDesc read_set_header(KeywordInput& in, std::span<const CardSpec> c
   set.da4 = v.real("DA4");
   set.solver = v.blank("SOLVER") ? "MECH" : v.text("SOLVER");
   set.where = in.where(line->line);
+  set.keyword = in.keyword().display();
   if (set.solver != "MECH" && set.solver != "mech") {
     in.fail(line->line, "SOLVER",
             fmt::format("SOLVER = {} is not supported: plyform has the mechanical solver (MECH) "
@@ -126,6 +156,40 @@ model::SetListDesc read_set(KeywordInput& in, std::span<const CardSpec> cards) {
       }
     }
     ++card;
+  }
+  return set;
+}
+
+/// The ranges of a _GENERATE set, checked one by one; the reader turns them into ids once the
+/// whole deck is read (expand_generated_sets), since the nodes and parts may come later.
+model::SetListDesc read_generated_set(KeywordInput& in, std::span<const CardSpec> cards) {
+  model::SetListDesc set = read_set_header(in, cards);
+  int card = 0;
+  while (const auto line = in.next_nonblank_line()) {
+    const CardValues values = in.read(cards[2], *line, card);
+    for (int k = 0; k < 4; ++k) {
+      const int first = static_cast<int>(values.at(static_cast<std::size_t>(2 * k)).integer);
+      const int last = static_cast<int>(values.at(static_cast<std::size_t>(2 * k + 1)).integer);
+      const int number = 4 * card + k + 1;  // B<number>BEG on the card's k-th pair
+      if (first == 0 && last == 0)
+        continue;
+      if (first == 0 || last == 0) {
+        in.fail(line->line, fmt::format("B{}{}", number, first == 0 ? "BEG" : "END"),
+                fmt::format("range {} has only one end ({} to {}): give both its first and last "
+                            "id, or neither",
+                            number, first, last));
+      }
+      if (first > last) {
+        in.fail(line->line, fmt::format("B{}END", number),
+                fmt::format("range {} is reversed: B{}END = {} is below B{}BEG = {}", number,
+                            number, last, number, first));
+      }
+      set.ranges.push_back({first, last, in.where(line->line)});
+    }
+    ++card;
+  }
+  if (set.ranges.empty()) {
+    in.fail(set.where.line, "B1BEG", "no range given: a generated set needs at least one");
   }
   return set;
 }
@@ -154,7 +218,61 @@ void read_set_segment(KeywordInput& in) {
   in.model().segment_sets.push_back(std::move(set));
 }
 
+void read_set_node_generate(KeywordInput& in) {
+  in.model().node_sets.push_back(read_generated_set(in, kNodeGenerateCards));
+}
+
+void read_set_part_generate(KeywordInput& in) {
+  in.model().part_sets.push_back(read_generated_set(in, kPartGenerateCards));
+}
+
+/// The ids of `sets`' ranges that `defined` (sorted) holds, in range order, each once; a set
+/// whose ranges hold none is an error on its card 1.
+void expand(std::vector<model::SetListDesc>& sets, const std::vector<int>& defined,
+            std::string_view what, std::vector<Diagnostic>& errors) {
+  for (model::SetListDesc& set : sets) {
+    if (set.ranges.empty())
+      continue;
+    std::unordered_set<int> seen;
+    for (const model::IdRange& r : set.ranges) {
+      const auto begin = std::lower_bound(defined.begin(), defined.end(), r.first);
+      const auto end = std::upper_bound(begin, defined.end(), r.last);
+      for (auto it = begin; it != end; ++it) {
+        if (seen.insert(*it).second) {
+          set.ids.push_back(*it);
+          set.ids_where.push_back(r.where);
+        }
+      }
+    }
+    // A single range may hold nothing (LS-PrePost writes "every part but one" as ranges up to
+    // 99999999); a whole set that names nothing is a mistake.
+    if (set.ids.empty()) {
+      errors.push_back(
+          {set.where, set.keyword, "B1BEG",
+           fmt::format("set {}: its ranges hold no {} defined in the deck", set.id, what)});
+    }
+  }
+}
+
 }  // namespace
+
+void expand_generated_sets(model::ModelDesc& model, std::vector<Diagnostic>& errors) {
+  const auto sorted_ids = [](const auto& items) {
+    std::vector<int> ids;
+    ids.reserve(items.size());
+    for (const auto& item : items)
+      ids.push_back(item.id);
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  };
+  const auto needs = [](const std::vector<model::SetListDesc>& sets) {
+    return std::any_of(sets.begin(), sets.end(), [](const auto& s) { return !s.ranges.empty(); });
+  };
+  if (needs(model.node_sets))
+    expand(model.node_sets, sorted_ids(model.nodes), "node", errors);
+  if (needs(model.part_sets))
+    expand(model.part_sets, sorted_ids(model.parts), "part", errors);
+}
 
 KeywordSpec set_node_list_keyword() {
   return {.name = "SET_NODE_LIST",
@@ -162,8 +280,8 @@ KeywordSpec set_node_list_keyword() {
           .handler = read_set_node_list,
           .cards = kNodeCards,
           .summary =
-              "A set of nodes listed by id (zeros and blanks are skipped). The _GENERATE "
-              "and _ADD forms are not supported."};
+              "A set of nodes listed by id (zeros and blanks are skipped). The _ADD form is "
+              "not supported."};
 }
 
 KeywordSpec set_part_list_keyword() {
@@ -197,6 +315,44 @@ KeywordSpec set_segment_keyword() {
               "A set of segments (quadrilaterals, or triangles with N4 blank, 0 or N3) given by "
               "node ids, for the sides of a contact. The attributes A1..A4 are ignored; the "
               "_GENERATE, _ADD and other forms are not supported."};
+}
+
+}  // namespace plyform::keyword
+
+namespace plyform::keyword {
+
+KeywordSpec set_node_generate_keyword() {
+  return {.name = "SET_NODE_GENERATE",
+          .options = kNoneOrTitle,
+          .handler = read_set_node_generate,
+          .cards = kNodeGenerateCards,
+          .summary =
+              "A set of the nodes whose ids lie in ranges B1BEG-B1END, ...: every node the deck "
+              "defines in a range (ids missing from the mesh are skipped), in range order, "
+              "each once. A range with one end only or reversed is an error, and so is a set "
+              "whose ranges hold no node."};
+}
+
+KeywordSpec set_node_list_generate_keyword() {
+  KeywordSpec spec = set_node_generate_keyword();
+  spec.name = "SET_NODE_LIST_GENERATE";
+  spec.summary = "The same keyword as *SET_NODE_GENERATE (the spelling LS-PrePost writes).";
+  return spec;
+}
+
+KeywordSpec set_part_generate_keyword() {
+  return {.name = "SET_PART_GENERATE",
+          .options = kNoneOrTitle,
+          .handler = read_set_part_generate,
+          .cards = kPartGenerateCards,
+          .summary = "A set of the parts whose ids lie in ranges, as *SET_NODE_GENERATE."};
+}
+
+KeywordSpec set_part_list_generate_keyword() {
+  KeywordSpec spec = set_part_generate_keyword();
+  spec.name = "SET_PART_LIST_GENERATE";
+  spec.summary = "The same keyword as *SET_PART_GENERATE (the spelling LS-PrePost writes).";
+  return spec;
 }
 
 }  // namespace plyform::keyword

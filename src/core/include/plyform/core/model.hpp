@@ -93,18 +93,30 @@ struct Part {
 /// Degrees of freedom as bits: x, y, z translations and rotations about x, y, z (shell nodes).
 enum Dof : unsigned { dof_x = 1u, dof_y = 2u, dof_z = 4u, dof_rx = 8u, dof_ry = 16u, dof_rz = 32u };
 
-/// *BOUNDARY_SPC_NODE/_SET: fixed translations of one node.
+/// *BOUNDARY_SPC_NODE/_SET (and *NODE TC, RC): fixed degrees of freedom of one node, along
+/// and about the global axes or, when `local`, the axes of a coordinate system (CID).
 struct FixedDofs {
   Index node = 0;
-  unsigned dofs = 0;  ///< Dof bits
+  unsigned dofs = 0;   ///< Dof bits, of the local axes when `local`
+  bool local = false;  ///< the bits name the axes below
+  /// The local unit axes, rows x, y, z in global components (orthonormal, right-handed).
+  std::array<std::array<double, 3>, 3> axes{};
 };
 
 enum class MotionKind : int { velocity = 0, acceleration = 1, displacement = 2 };
 
-/// *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET: one node, one translational direction.
+/// *BOUNDARY_PRESCRIBED_MOTION_NODE/_SET: one node, one translational direction, or (DOF
+/// 9-11) its turning about an axis parallel to a global one.
 struct PrescribedMotion {
   Index node = 0;
-  int direction = 0;  ///< 0, 1, 2
+  /// 0, 1, 2: translation along x, y, z. 3, 4, 5: the node turns about an axis parallel to
+  /// x, y, z through `axis`; its two translations across the axis are prescribed, the one
+  /// along it stays free. The curve then gives the angle (radians, right-handed about the
+  /// positive axis), the angular velocity or the angular acceleration.
+  int direction = 0;
+  /// Directions 3-5: the axis's coordinates along the two global axes across it, in cyclic
+  /// order: (y, z) about x, (z, x) about y, (x, y) about z (LS-DYNA's OFFSET1, OFFSET2).
+  std::array<double, 2> axis{};
   MotionKind kind = MotionKind::velocity;
   Index curve = 0;  ///< index into Model::curves
   double scale = 1.0;

@@ -8,6 +8,7 @@
 #include "plyform/model/boundary_desc.hpp"
 #include "plyform/model/contact_desc.hpp"
 #include "plyform/model/control_desc.hpp"
+#include "plyform/model/coordinate_system_desc.hpp"
 #include "plyform/model/curve_desc.hpp"
 #include "plyform/model/database_desc.hpp"
 #include "plyform/model/define_table_desc.hpp"
@@ -69,6 +70,8 @@ struct ModelDesc {
   std::vector<SetListDesc> node_sets;
   std::vector<SetListDesc> part_sets;
   std::vector<SetSegmentDesc> segment_sets;
+  /// *DEFINE_COORDINATE_SYSTEM and *DEFINE_COORDINATE_VECTOR (one id range).
+  std::vector<CoordinateSystemDesc> coordinate_systems;
 
   // Contact
   std::vector<ContactDesc> contacts;
