@@ -72,6 +72,8 @@ std::string side_name(model::ContactSideType type, int id) {
       return fmt::format("part {}", id);
     case model::ContactSideType::node_set:
       return fmt::format("node set {}", id);
+    case model::ContactSideType::all_parts:
+      return "every part";
   }
   return fmt::format("{}", id);
 }
@@ -85,9 +87,14 @@ void print_contacts(const model::ModelDesc& m, std::ostream& out) {
         c.id != 0 &&
         std::any_of(m.user_interface_frictions.begin(), m.user_interface_frictions.end(),
                     [&](const auto& u) { return u.contact_id == c.id; });
-    fmt::print(out, "  contact {}{} {}: slave {}, master {}{}\n",
-               c.id != 0 ? std::to_string(c.id) : "(no CID)",
-               c.heading.empty() ? "" : " '" + c.heading + "'", c.keyword,
+    const std::string id = c.id != 0 ? std::to_string(c.id) : "(no CID)";
+    const std::string heading = c.heading.empty() ? "" : " '" + c.heading + "'";
+    if (c.kind == model::ContactKind::automatic_single_surface) {
+      fmt::print(out, "  contact {}{} {}: single surface {}\n", id, heading, c.keyword,
+                 c.ssid == 0 ? std::string("every part") : side_name(c.sstyp, c.ssid));
+      continue;
+    }
+    fmt::print(out, "  contact {}{} {}: slave {}, master {}{}\n", id, heading, c.keyword,
                side_name(c.sstyp, c.ssid), side_name(c.mstyp, c.msid),
                cohesive ? ", cohesive law (UIF)" : "");
   }

@@ -576,6 +576,38 @@ double node_mass(const std::vector<double>& mass, const unsigned char* rigid, co
   return rigid != nullptr && rigid[i] ? kInf : mass[i];
 }
 
+// Self contact: each slave node's candidates less the segments it touches through the mesh
+// (both lists sorted: one merge), and rigid segments for a rigid node. Compacts the CSR in place.
+void drop_own_segments(PassRuntime& pr, const unsigned char* rigid) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t ns = cp.slave_count();
+  const auto is_rigid = [&](core::Index n) {
+    return rigid != nullptr && rigid[static_cast<std::size_t>(n)] != 0;
+  };
+  std::size_t out = 0;
+  std::size_t begin = pr.cand_start[0];
+  for (std::size_t k = 0; k < ns; ++k) {
+    const std::size_t end = pr.cand_start[k + 1];
+    const bool rigid_node = cp.skip_rigid_pairs && is_rigid(cp.slave_nodes[k]);
+    std::size_t e = cp.exclude_start[k];
+    const std::size_t e_end = cp.exclude_start[k + 1];
+    pr.cand_start[k] = out;
+    for (std::size_t c = begin; c < end; ++c) {
+      const core::Index s = pr.cand[c];
+      while (e < e_end && cp.exclude[e] < s)
+        ++e;
+      if (e < e_end && cp.exclude[e] == s)
+        continue;
+      if (rigid_node && is_rigid(cp.segments[4 * static_cast<std::size_t>(s)]))
+        continue;
+      pr.cand[out++] = s;
+    }
+    begin = end;
+  }
+  pr.cand_start[ns] = out;
+  pr.cand.resize(out);
+}
+
 void search(PassRuntime& pr, const double* packed, const std::vector<double>& mass,
             const unsigned char* rigid, const Rotations& rot, double tssfac) {
   const core::ContactPass& cp = *pr.pass;
@@ -588,6 +620,8 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
   }
   pr.grid.build(cp.segments, packed, kStride, pr.seg_radius);
   pr.grid.query(cp.slave_nodes, packed, kStride, pr.cand_start, pr.cand);
+  if (!cp.exclude_start.empty())
+    drop_own_segments(pr, rigid);
   for (std::size_t t = 0; t < pr.tracked_nodes.size(); ++t) {
     const double* p = at(packed, pr.tracked_nodes[t]);
     pr.tracked_ref[3 * t] = p[0];
@@ -967,6 +1001,48 @@ void tie_initial_contacts(PassRuntime& pr, const double* packed) {
   }
 }
 
+// IGNORE 1 and 2: a node that penetrates at t = 0 keeps that depth as its tolerance (the law
+// sees gap 0 there), so the penalty acts only on deeper penetration and nothing is pushed out;
+// the tolerance shrinks as the node comes out (measure()). IGNORE 2 lists each node with the
+// position that would have cleared it (moved out along the contact normal).
+void track_initial_penetrations(PassRuntime& pr, const double* packed, const core::Model& model,
+                                std::vector<std::string>& warnings) {
+  const core::ContactPass& cp = *pr.pass;
+  std::size_t count = 0, listed = 0;
+  double deepest = 0.0;
+  for (std::size_t k = 0; k < cp.slave_count(); ++k) {
+    if (pr.seg[k] < 0 || pr.gap[k] >= 0.0)
+      continue;
+    const double g = pr.gap[k];
+    pr.arrival_depth[k] = g;
+    pr.gap[k] = 0.0;
+    ++count;
+    deepest = std::min(deepest, g);
+    if (pr.iface->ignore == 2 && listed < 50) {
+      ++listed;
+      const core::Index node = cp.slave_nodes[k];
+      const double* p = at(packed, node);
+      const double* n = &pr.frame[9 * k];  // towards the slave's side
+      std::ostringstream os;
+      os << pr.iface->keyword << " " << pr.iface->id << ": node "
+         << model.node_id[static_cast<std::size_t>(node)] << " penetrates " << -g << " at (" << p[0]
+         << ", " << p[1] << ", " << p[2] << "); clear at (" << p[0] - g * n[0] << ", "
+         << p[1] - g * n[1] << ", " << p[2] - g * n[2] << "): tracked (IGNORE 2)";
+      warnings.push_back(os.str());
+    }
+  }
+  if (count > 0) {
+    std::ostringstream os;
+    os << pr.iface->keyword << " " << pr.iface->id << ": " << count
+       << " slave nodes penetrate at t = 0 (deepest " << -deepest << "): tracked (IGNORE "
+       << pr.iface->ignore
+       << "), the penalty acts only beyond that depth, which shrinks as they come out";
+    if (listed < count && pr.iface->ignore == 2)
+      os << " (" << listed << " listed)";
+    warnings.push_back(os.str());
+  }
+}
+
 void ContactSet::start(const double* packed) {
   for (auto& pp : passes_) {
     PassRuntime& pr = *pp;
@@ -975,6 +1051,8 @@ void ContactSet::start(const double* packed) {
     ++searches_;
     const std::size_t ns = pr.pass->slave_count();
     measure(pr, 0.0, packed, nullptr, mass_, rigid_, rot_);
+    if (pr.iface->ignore > 0)
+      track_initial_penetrations(pr, packed, model_, warnings_);
     pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
     if (pr.iface->tiebreak.enabled())
       tie_initial_contacts(pr, packed);
@@ -984,7 +1062,9 @@ void ContactSet::start(const double* packed) {
     double deepest = 0.0;
     core::Index where = -1;
     for (std::size_t k = 0; k < ns; ++k) {
-      if (pr.seg[k] < 0 || pr.gap[k] >= 0.0)
+      // Round-off of nodes placed on the surface (or moved onto it, IGNORE = 0) is no
+      // penetration.
+      if (pr.seg[k] < 0 || pr.gap[k] >= -1e-9 * pr.margin)
         continue;
       if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact &&
           pr.iface->cohesive && pr.law.parameters().bond_tol >= -pr.gap[k])
@@ -1329,6 +1409,38 @@ void ContactSet::take_friction_heat(std::vector<double>& energy) {
       for (std::size_t j = 0; j < 4; ++j)
         energy[static_cast<std::size_t>(pr.pass->segments[4 * static_cast<std::size_t>(sg) + j])] +=
             (1.0 - slave_part) * d * pr.shape[4 * k + j];
+    }
+  }
+}
+
+void ContactSet::initial_penetrations(std::vector<InitialPenetration>& out) const {
+  out.clear();
+  for (const auto& pp : passes_) {
+    const PassRuntime& pr = *pp;
+    if (pr.iface->ignore != 0 || pr.iface->cohesive)
+      continue;
+    const auto index = static_cast<std::size_t>(pr.iface - model_.contacts.data());
+    const auto is_rigid = [&](core::Index v) {
+      return rigid_ != nullptr && rigid_[static_cast<std::size_t>(v)] != 0;
+    };
+    for (std::size_t k = 0; k < pr.pass->slave_count(); ++k) {
+      const core::Index node = pr.pass->slave_nodes[k];
+      if (pr.seg[k] < 0 || !(pr.gap[k] < 0.0))
+        continue;
+      if (!pr.tie_state.empty() && static_cast<TieState>(pr.tie_state[k]) == TieState::tied)
+        continue;
+      const double* n = &pr.frame[9 * k];  // towards the slave's side
+      const double d = -pr.gap[k];
+      if (!is_rigid(node)) {
+        out.push_back({node, index, d, {d * n[0], d * n[1], d * n[2]}});
+        continue;
+      }
+      // A rigid node (a tool's) in a deformable surface: that surface's nodes move away.
+      const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(pr.seg[k])];
+      for (int j = 0; j < (q[2] == q[3] ? 3 : 4); ++j) {
+        if (!is_rigid(q[j]))
+          out.push_back({q[j], index, d, {-d * n[0], -d * n[1], -d * n[2]}});
+      }
     }
   }
 }

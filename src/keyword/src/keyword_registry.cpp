@@ -62,13 +62,14 @@ KeywordSpec contact_one_way_surface_to_surface_keyword();
 KeywordSpec contact_surface_to_surface_keyword();
 KeywordSpec contact_forming_one_way_surface_to_surface_keyword();
 KeywordSpec contact_automatic_surface_to_surface_keyword();
+KeywordSpec contact_automatic_one_way_surface_to_surface_keyword();
+KeywordSpec contact_automatic_single_surface_keyword();
 KeywordSpec boundary_spc_node_keyword();
 KeywordSpec boundary_spc_set_keyword();
 KeywordSpec boundary_prescribed_motion_node_keyword();
 KeywordSpec boundary_prescribed_motion_set_keyword();
 KeywordSpec boundary_prescribed_motion_rigid_keyword();
 KeywordSpec boundary_temperature_node_keyword();
-KeywordSpec contact_automatic_one_way_surface_to_surface_keyword();
 KeywordSpec boundary_temperature_set_keyword();
 KeywordSpec boundary_convection_set_keyword();
 KeywordSpec boundary_flux_set_keyword();
@@ -164,6 +165,8 @@ std::span<const KeywordSpec> keyword_registry() {
       contact_surface_to_surface_keyword(),
       contact_forming_one_way_surface_to_surface_keyword(),
       contact_automatic_surface_to_surface_keyword(),
+      contact_automatic_one_way_surface_to_surface_keyword(),
+      contact_automatic_single_surface_keyword(),
       boundary_spc_node_keyword(),
       boundary_spc_set_keyword(),
       boundary_prescribed_motion_node_keyword(),
@@ -176,7 +179,6 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_radiation_set_keyword(),
       initial_velocity_generation_keyword(),
       initial_velocity_node_keyword(),
-      contact_automatic_one_way_surface_to_surface_keyword(),
       initial_temperature_node_keyword(),
       initial_temperature_set_keyword(),
       load_node_point_keyword(),

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <variant>
 
+#include "plyform/contact/initial_penetrations.hpp"
 #include "plyform/material/law_registry.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
@@ -378,6 +379,71 @@ struct ContactBuilder {
     }
   }
 
+  // *CONTACT_AUTOMATIC_SINGLE_SURFACE: one pass, every node of the surface against every segment
+  // of it but those that touch it through the mesh: the segments around the node and those that
+  // share a node with them (a node of a bent sheet would otherwise see its neighbours' faces
+  // within the thickness). Rigid nodes skip rigid segments.
+  std::optional<core::ContactPass> single_surface_pass(const model::ContactDesc& c, double slsfac,
+                                                       bool rigid_offset, bool thkchg) {
+    std::optional<Surface> surface;
+    std::vector<Index> none;
+    if (c.ssid == 0) {
+      surface = surface_of_parts(std::vector<char>(m.parts.size(), 1));
+      if (surface->size() == 0) {
+        error(c.card1, c.keyword, "SSID", "the model has no shell element or solid face");
+        return std::nullopt;
+      }
+    } else {
+      surface = side_surface(c, c.sstyp, c.ssid, "SSID", none);
+    }
+    if (!surface)
+      return std::nullopt;
+    core::ContactPass p;
+    p.offsets_follow_thickness = thkchg;
+    if (!fill_slaves(c, *surface, {}, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, p))
+      return std::nullopt;
+    fill_master(*surface, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, p);
+    // Node -> segments (CSR), then per slave node its segments' nodes' segments.
+    const std::size_t nseg = surface->size();
+    std::vector<std::size_t> start(m.node_count() + 1, 0);
+    const auto corners = [&](std::size_t s) {
+      return surface->segments[4 * s + 2] == surface->segments[4 * s + 3] ? 3 : 4;
+    };
+    for (std::size_t s = 0; s < nseg; ++s)
+      for (int j = 0; j < corners(s); ++j)
+        ++start[static_cast<std::size_t>(surface->segments[4 * s + static_cast<std::size_t>(j)]) +
+                1];
+    for (std::size_t i = 0; i < m.node_count(); ++i)
+      start[i + 1] += start[i];
+    std::vector<Index> around(start.back());
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t s = 0; s < nseg; ++s)
+      for (int j = 0; j < corners(s); ++j)
+        around[fill[static_cast<std::size_t>(
+            surface->segments[4 * s + static_cast<std::size_t>(j)])]++] = static_cast<Index>(s);
+    p.exclude_start.assign(1, 0);
+    std::vector<Index> near;
+    for (Index v : p.slave_nodes) {
+      near.clear();
+      const auto vi = static_cast<std::size_t>(v);
+      for (std::size_t a = start[vi]; a < start[vi + 1]; ++a) {
+        const auto s = static_cast<std::size_t>(around[a]);
+        for (int j = 0; j < corners(s); ++j) {
+          const auto u =
+              static_cast<std::size_t>(surface->segments[4 * s + static_cast<std::size_t>(j)]);
+          near.insert(near.end(), around.begin() + static_cast<long>(start[u]),
+                      around.begin() + static_cast<long>(start[u + 1]));
+        }
+      }
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      p.exclude.insert(p.exclude.end(), near.begin(), near.end());
+      p.exclude_start.push_back(p.exclude.size());
+    }
+    p.skip_rigid_pairs = true;
+    return p;
+  }
+
   law::Parameters penalty_law(const model::ContactDesc& c) {
     double fs = c.fs, fd = c.fd, dc = c.dc, vc = c.vc;
     if (fs == 0.0 && d.control_contact && d.control_contact->sfric > 0.0) {
@@ -430,6 +496,8 @@ struct ContactBuilder {
                     ? core::ContactKind::forming
                 : c.kind == model::ContactKind::automatic_one_way_surface_to_surface
                     ? core::ContactKind::automatic_one_way
+                : c.kind == model::ContactKind::automatic_single_surface
+                    ? core::ContactKind::single_surface
                     : core::ContactKind::automatic;
       if (c.tiebreak) {
         ci.tiebreak.option = c.tiebreak_option;
@@ -442,6 +510,7 @@ struct ContactBuilder {
       ci.penopt = penopt;
       ci.maxpar = c.maxpar;
       ci.search_interval = c.bsort > 0 ? c.bsort : nsbcs;
+      ci.ignore = c.ignore > 0 ? c.ignore : (d.control_contact ? d.control_contact->ignore : 0);
       ci.birth = c.birth;
       ci.death = c.death;
       if (c.thermal) {
@@ -500,7 +569,22 @@ struct ContactBuilder {
       // Rigid shells (tools) are offset only in automatic contacts or with SHLTHK = 2: a tool
       // mesh is the tool's surface.
       const bool rigid_offset = ci.kind == core::ContactKind::automatic ||
-                                ci.kind == core::ContactKind::automatic_one_way || shlthk == 2;
+                                ci.kind == core::ContactKind::automatic_one_way ||
+                                ci.kind == core::ContactKind::single_surface || shlthk == 2;
+      if (ci.kind == core::ContactKind::single_surface) {
+        if (uif != nullptr) {
+          error(uif->where, "*USER_INTERFACE_FRICTION", "NOSID",
+                "contact " + std::to_string(c.id) +
+                    " is a single-surface contact: the cohesive law bonds one layer to another "
+                    "through a ONE_WAY or FORMING_ONE_WAY contact");
+          continue;
+        }
+        if (auto p = single_surface_pass(c, slsfac, rigid_offset, thkchg)) {
+          ci.passes.push_back(std::move(*p));
+          m.contacts.push_back(std::move(ci));
+        }
+        continue;
+      }
       std::vector<Index> slave_only, master_only;
       auto slave = side_surface(c, c.sstyp, c.ssid, "SSID", slave_only);
       auto master = side_surface(c, c.mstyp, c.msid, "MSID", master_only);
@@ -566,12 +650,69 @@ struct ContactBuilder {
 
 }  // namespace
 
+// IGNORE = 0, LS-DYNA's default: the slave nodes that penetrate at t = 0 are moved out along
+// the contact normal in the model definition (then the contacts are built again on the moved
+// nodes); a few rounds, since a moved node may press into another surface. A warning per
+// contact says how many moved and how far.
+void remove_initial_penetrations(const model::ModelDesc& desc, core::Model& model,
+                                 Diagnostics& warnings) {
+  double size = 0.0;
+  for (std::size_t i = 0; i < model.node_count(); ++i)
+    size = std::max({size, std::abs(model.x0[i]), std::abs(model.y0[i]), std::abs(model.z0[i])});
+  const double negligible = 1e-9 * size;
+  struct Moved {
+    std::size_t count = 0;
+    double deepest = 0.0;
+    core::GlobalId node = 0;
+  };
+  std::vector<Moved> moved(model.contacts.size());
+  for (int round = 0; round < 4; ++round) {
+    bool any = false;
+    for (const contact::InitialPenetration& p : contact::initial_penetrations(model)) {
+      if (p.depth <= negligible)
+        continue;
+      any = true;
+      const auto i = static_cast<std::size_t>(p.node);
+      model.x0[i] += p.move[0];
+      model.y0[i] += p.move[1];
+      model.z0[i] += p.move[2];
+      Moved& mv = moved[p.interface];
+      ++mv.count;
+      if (p.depth > mv.deepest) {
+        mv.deepest = p.depth;
+        mv.node = model.node_id[i];
+      }
+    }
+    if (!any)
+      break;
+    // The contacts' areas, stiffnesses and offsets from the moved nodes.
+    model.contacts.clear();
+    Diagnostics again_errors, again_warnings;
+    ContactBuilder again{desc, model, again_errors, again_warnings, Geometry{model}, {}, {},
+                         {},   {}};
+    again.build();
+  }
+  for (std::size_t c = 0; c < moved.size() && c < desc.contacts.size(); ++c) {
+    if (moved[c].count == 0)
+      continue;
+    const model::ContactDesc& cd = desc.contacts[c];
+    warnings.push_back(
+        {cd.where, cd.keyword, "IGNORE",
+         fmt::format("contact {}: {} slave node moves to clear penetrations at t = 0 (deepest "
+                     "{:.4g} at node {}), as LS-DYNA does with IGNORE = 0; IGNORE = 1 tracks them "
+                     "instead (docs/contact.md)",
+                     cd.id, moved[c].count, moved[c].deepest, moved[c].node)});
+  }
+}
+
 void build_contacts(const model::ModelDesc& desc, core::Model& model, Diagnostics& errors,
                     Diagnostics& warnings) {
   if (desc.contacts.empty())
     return;
   ContactBuilder b{desc, model, errors, warnings, Geometry{model}, {}, {}, {}, {}};
   b.build();
+  if (errors.empty())
+    remove_initial_penetrations(desc, model, warnings);
 }
 
 void build_temperatures(const model::ModelDesc& desc, core::Model& model, Diagnostics& errors) {

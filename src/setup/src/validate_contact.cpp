@@ -30,6 +30,8 @@ std::string_view side_noun(ContactSideType t) {
       return "part";
     case ContactSideType::node_set:
       return "node set";
+    case ContactSideType::all_parts:
+      return "every part";
   }
   return "side";
 }
@@ -63,6 +65,8 @@ struct Tables {
         return parts;
       case ContactSideType::node_set:
         return node_sets;
+      case ContactSideType::all_parts:
+        return parts;
     }
     return parts;
   }
@@ -106,7 +110,11 @@ void check_contact_side(const model::ContactDesc& c, bool slave, const Tables& t
   const int id = slave ? c.ssid : c.msid;
   const ContactSideType type = slave ? c.sstyp : c.mstyp;
   const std::string_view field = slave ? "SSID" : "MSID";
-  if (id == 0) {
+  if (c.kind == model::ContactKind::automatic_single_surface) {
+    // One side (SSID; 0 is every part); MSID is not used.
+    if (!slave || id == 0)
+      return;
+  } else if (id == 0) {
     errors.push_back(
         {c.card1, c.keyword, std::string(field),
          cat(field, " = 0 (every part) is not supported: name a ",

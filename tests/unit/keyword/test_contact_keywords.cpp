@@ -150,8 +150,8 @@ TEST(Contact, FieldsPlyformDoesNotImplementAreNamed) {
                "maximum penetration distance");
   expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n0,0,0,2\n", 6, kKw, "SNLOG",
                "only 0 and 1");
-  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n1,1\n", 7, kKw, "IGNORE",
-               "initial penetrations");
+  expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n1,3\n", 7, kKw, "IGNORE",
+               "IGNORE takes 0, 1 or 2");
   expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n\n0,0,0,0,0,0,0,1\n", 8, kKw,
                "SHLEDG", "shell edge");
   expect_error("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE\n1,2,3,3\n\n\n\n\n\n\n1\n", 9, kKw, "",
@@ -340,7 +340,7 @@ TEST(ControlContact, FieldsPlyformDoesNotImplementAreNamed) {
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,2\n", 4, kKw, "TH_SF", "*PART_CONTACT");
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,3\n", 4, kKw, "PEN_SF", "*PART_CONTACT");
   expect_error("*CONTROL_CONTACT\n0.1\n\n0,0,0,0,0,0,0,2\n", 4, kKw, "PTSCL", "blank, 0 or 1");
-  expect_error("*CONTROL_CONTACT\n0.1\n\n\n1\n", 5, kKw, "IGNORE", "initial penetrations");
+  expect_error("*CONTROL_CONTACT\n0.1\n\n\n3\n", 5, kKw, "IGNORE", "IGNORE takes 0, 1 or 2");
   // Cards 5 and 6 as LS-PrePost writes them are read; what they could ask of the contacts is
   // rejected by name, and a seventh card is an error.
   const ReadResult six = read_ok(

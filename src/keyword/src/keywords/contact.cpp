@@ -103,6 +103,41 @@ constexpr std::array kCard1{
               .allowed = kPrintFlags},
 };
 
+constexpr std::array kSingleSurfaceTypes{0, 2, 3, 5};
+// Card 1 of *CONTACT_AUTOMATIC_SINGLE_SURFACE: one side, every node of it against every
+// segment of it.
+constexpr std::array kSingleCard1{
+    FieldSpec{.name = "SSID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .unit = "-",
+              .description = "the surface: a part set or part id (SSTYP); 0: every part of the "
+                             "model"},
+    FieldSpec{.name = "MSID",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .max_value = 0,
+              .unit = "-",
+              .description = "not used by a single-surface contact: blank or 0"},
+    FieldSpec{.name = "SSTYP",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "what SSID is: 2 part set, 3 part; 0 or 5 with SSID = 0: every part",
+              .allowed = kSingleSurfaceTypes,
+              .allowed_note = "segment and shell element sets (0 with SSID > 0, 1), exclusions "
+                              "(6) and the other codes are not supported"},
+    FieldSpec{.name = "MSTYP",
+              .type = FieldType::kInteger,
+              .min_value = 0,
+              .max_value = 0,
+              .unit = "-",
+              .description = "not used by a single-surface contact: blank or 0"},
+    kCard1[4],
+    kCard1[5],
+    kCard1[6],
+    kCard1[7],
+};
+
 constexpr std::array kCard2{
     FieldSpec{.name = "FS",
               .min_value = 0.0,
@@ -254,8 +289,14 @@ constexpr std::array kCardC{
                              "in an explicit run",
               .allowed = kIgaps,
               .allowed_note = "IGAP takes 0, 1 or 2"},
-    default_only("IGNORE", FieldType::kInteger,
-                 "initial penetrations tracked instead of pushed out: must be 0"),
+    FieldSpec{.name = "IGNORE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "initial penetrations: 0 as *CONTROL_CONTACT IGNORE says (pushed "
+                             "out by default), 1 tracked (the penalty acts only beyond the depth "
+                             "at t = 0), 2 as 1 with each node listed",
+              .allowed = kIgaps,
+              .allowed_note = "IGNORE takes 0, 1 or 2"},
     default_only("DPRFAC", FieldType::kReal, "penetration reduction factor (SOFT = 2): must be 0"),
     default_only("DTSTIF", FieldType::kReal, "time step of the SOFT = 1 stiffness: must be 0"),
     default_only("EDGEK", FieldType::kReal, "edge stiffness scale (SOFT = 2): must be 0"),
@@ -391,6 +432,13 @@ constexpr CardSpec kTiebreakCardSpec{
     .presence =
         "with _TIEBREAK only: required, right after card 3 (cards 2 and 3 must then be "
         "given)"};
+constexpr std::array kSingleSurfaceCards{
+    kCards[0], CardSpec{.title = "Card 1", .fields = kSingleCard1, .presence = "required"},
+    kCards[2], kCards[3],
+    kCards[4], kCards[5],
+    kCards[6], kCards[7],
+    kCards[8],
+};
 constexpr std::array kAutomaticCards{
     kCards[0], kCards[1], kCards[2], kCards[3], kCards[4],
     kCards[5], kCards[6], kCards[7], kCards[8], kTiebreakCardSpec,
@@ -439,17 +487,19 @@ void read_tiebreak_card(KeywordInput& in, model::ContactDesc& c) {
 }
 
 /// Optional cards B-D: every field must keep its default (the table says which values count).
-void read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& line) {
-  const CardValues v = in.read(card, line);
+CardValues read_default_card(KeywordInput& in, const CardSpec& card, const DataLine& line) {
+  CardValues v = in.read(card, line);
   for (const FieldSpec& f : card.fields) {
     if (!f.allowed.empty())
       continue;  // checked by the table
     const double value = f.type == FieldType::kInteger ? v.integer(f.name) : v.real(f.name);
     require_zero(in, line.line, f.name, value, f.description);
   }
+  return v;
 }
 
 void read_contact(KeywordInput& in, model::ContactKind kind) {
+  const bool single = kind == model::ContactKind::automatic_single_surface;
   model::ContactDesc c;
   c.kind = kind;
   c.keyword = in.keyword().display();
@@ -466,7 +516,7 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   if (!line1) {
     in.fail(in.keyword().line, "", "missing card 1 (SSID MSID SSTYP MSTYP ...)");
   }
-  const CardValues c1 = in.read(kCards[1], *line1);
+  const CardValues c1 = in.read(single ? kSingleSurfaceCards[1] : kCards[1], *line1);
   c.card1 = in.where(line1->line);
   c.ssid = c1.integer("SSID");
   c.msid = c1.integer("MSID");
@@ -480,6 +530,16 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
               "the interface force file (intfor) is not written; rcforc.csv holds the "
               "contact's resultant force");
     }
+  }
+  if (single && c.ssid > 0 && c.sstyp == model::ContactSideType::segment_set) {
+    in.fail(line1->line, "SSTYP",
+            fmt::format("SSTYP 0 with SSID = {}: a segment set as a single surface is not "
+                        "supported; name a part (3) or part set (2), or SSID = 0 for every part",
+                        c.ssid));
+  }
+  if (single && c.ssid > 0 && static_cast<int>(c.sstyp) == 5) {
+    in.fail(line1->line, "SSID",
+            fmt::format("SSTYP 5 is every part: SSID = {} must then be 0", c.ssid));
   }
   require_zero(in, line1->line, "SBOXID", c1.integer("SBOXID"), "a box of the slave side");
   require_zero(in, line1->line, "MBOXID", c1.integer("MBOXID"), "a box of the master side");
@@ -542,8 +602,11 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     require_zero(in, line_a->line, "LCIDAB", a.integer("LCIDAB"), "an airbag curve");
   }
   for (std::size_t k = 5; k < kThermalCardIndex; ++k) {
-    if (const auto line = in.next_line())
-      read_default_card(in, kCards[k], *line);
+    if (const auto line = in.next_line()) {
+      const CardValues v = read_default_card(in, kCards[k], *line);
+      if (k == 6)
+        c.ignore = static_cast<int>(v.integer("IGNORE"));
+    }
   }
   if (has_more_cards(in)) {
     const auto extra = in.next_nonblank_line();
@@ -623,6 +686,23 @@ KeywordSpec contact_automatic_surface_to_surface_keyword() {
               "defaults); cards E and after, boxes, PENCHK, SOFT = 2 and airbag curves are "
               "errors. _TIEBREAK: LS-DYNA's built-in tiebreak (OPTION 1-4), its card right "
               "after card 3 (docs/contact.md)."};
+}
+
+KeywordSpec contact_automatic_single_surface_keyword() {
+  return {
+      .name = "CONTACT_AUTOMATIC_SINGLE_SURFACE",
+      .options = kContactOptions,
+      .handler =
+          [](KeywordInput& in) { read_contact(in, model::ContactKind::automatic_single_surface); },
+      .cards = kSingleSurfaceCards,
+      .summary =
+          "Self contact of a surface (a sheet folding or wrinkling onto itself, flanges "
+          "touching, parts of it meeting others): every node of the surface against every "
+          "segment of it except those around the node, shells touched on both faces at half "
+          "their thickness, rigid shells included (rigid against rigid is skipped). SSID: a "
+          "part (SSTYP 3) or part set (2), or 0 for every part of the model; MSID and MSTYP "
+          "are not used. Cards 2, 3 and optional cards A-D as for "
+          "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (docs/contact.md)."};
 }
 
 KeywordSpec contact_automatic_one_way_surface_to_surface_keyword() {

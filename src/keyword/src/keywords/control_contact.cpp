@@ -154,9 +154,13 @@ constexpr std::array kCard4{
     FieldSpec{.name = "IGNORE",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "initial penetrations: must be 0",
-              .allowed = kZeroOnly,
-              .allowed_note = "tracking initial penetrations (IGNORE 1, 2) is not supported yet"},
+              .description = "initial penetrations of every contact (unless its own IGNORE, "
+                             "optional card C, says otherwise): 0 pushed out by the penalty, 1 "
+                             "tracked (the penalty acts only beyond the depth at t = 0, which "
+                             "shrinks as the node comes out), 2 as 1 and each node listed with "
+                             "its position and the position that would clear it",
+              .allowed = kZeroToTwo,
+              .allowed_note = "IGNORE takes 0, 1 or 2"},
     FieldSpec{.name = "FRCENG",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -283,7 +287,9 @@ void read_control_contact(KeywordInput& in) {
     }
   }
   if (const auto line4 = in.next_line()) {
-    desc.frceng = in.read(kCards[3], *line4).integer("FRCENG");
+    const CardValues c4 = in.read(kCards[3], *line4);
+    desc.frceng = c4.integer("FRCENG");
+    desc.ignore = c4.integer("IGNORE");
   }
   for (std::size_t card = 4; card < 6; ++card) {
     if (const auto line = in.next_line())
@@ -314,7 +320,7 @@ KeywordSpec control_contact_keyword() {
               "Defaults of every contact: SLSFAC, PENOPT (1-3), SHLTHK, NSBCS and the default "
               "friction of card 3. Fields about rigid walls, spot welds, erosion, tied or "
               "single-surface contacts and user routines are read and ignored; INTERM, "
-              "TH, TH_SF, PEN_SF and IGNORE must keep their defaults; cards 5 and 6 are read "
+              "TH, TH_SF and PEN_SF must keep their defaults; cards 5 and 6 are read "
               "(ISYM, ICOV, ITHOFF, SHLEDG, PSTIFF and ITHCNT at their defaults). Given twice, the "
               "last one is used (with a warning)."};
 }

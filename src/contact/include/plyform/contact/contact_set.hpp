@@ -48,6 +48,15 @@ struct SlaveNodeResult {
   double beta = 0.0;      ///< adhesion intensity
 };
 
+/// A slave node that penetrates its master segment at t = 0 in an interface with IGNORE = 0, and
+/// the move that clears it (along the contact normal, by the depth).
+struct InitialPenetration {
+  core::Index node = 0;
+  std::size_t interface = 0;  ///< index into Model::contacts
+  double depth = 0.0;         ///< > 0
+  std::array<double, 3> move{};
+};
+
 struct PassRuntime;  // contact_set.cpp
 
 /// The rotational freedoms of the model's nodes (shells): angular velocities of the step just
@@ -122,6 +131,10 @@ class ContactSet {
   /// node's law history, segment, shape functions, frame, slip and forces, the candidate lists
   /// of the last search and the positions it was made at, the energy books.
   void visit_state(core::StateArchive& archive);
+  /// After start(): the slave nodes of interfaces with IGNORE = 0 and no cohesive law that
+  /// penetrate their segment (tied and bonded nodes excepted), each with its move; for a rigid
+  /// slave node, the deformable nodes of its segment, moved the other way.
+  void initial_penetrations(std::vector<InitialPenetration>& out) const;
   /// Things the user should know (initial penetrations, ...), set by start().
   [[nodiscard]] const std::vector<std::string>& warnings() const { return warnings_; }
 

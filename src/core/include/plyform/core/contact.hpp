@@ -20,6 +20,7 @@ enum class ContactKind : int {
   forming,            ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
   automatic,          ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE
   automatic_one_way,  ///< *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE
+  single_surface,     ///< *CONTACT_AUTOMATIC_SINGLE_SURFACE
 };
 
 /// How the penalty stiffness is found (SOFT of the contact).
@@ -56,6 +57,13 @@ struct ContactPass {
   std::vector<Index> slave_faces;
   std::vector<std::size_t> slave_face_start;
   std::vector<Index> slave_face_index;
+  // Self contact (single surface: the slave nodes are the master segments' nodes): per slave
+  // node the segments it never meets (CSR, sorted): those around it and their neighbours, which
+  // touch it through the mesh. Empty for other passes.
+  std::vector<std::size_t> exclude_start;
+  std::vector<Index> exclude;
+  /// Self contact: a rigid node never meets a rigid segment (rigid bodies move as wholes).
+  bool skip_rigid_pairs = false;
   /// +1 when the slave nodes are the interface's slave side (rcforc sums the force on them),
   /// -1 in the swapped pass of a two-way contact (the master nodes are the slave side then).
   int slave_side_sign = 1;
@@ -128,8 +136,12 @@ struct ContactInterface {
   double death = 1e20;
   bool cohesive = false;  ///< the law has adhesion (a *USER_INTERFACE_FRICTION names it)
   Tiebreak tiebreak;      ///< the _TIEBREAK option (the law is then penalty-Coulomb)
-  ContactHeat heat;       ///< the _THERMAL option
-  law::Parameters law;    ///< the interface law (cohesive, or penalty-Coulomb)
+  /// Initial penetrations (IGNORE): 0 pushed out by the penalty, 1 tracked (the penalty acts
+  /// beyond the depth at t = 0 only, the depth shrinking as the node comes out), 2 as 1 with
+  /// each node listed in the warnings.
+  int ignore = 0;
+  ContactHeat heat;     ///< the _THERMAL option
+  law::Parameters law;  ///< the interface law (cohesive, or penalty-Coulomb)
 };
 
 /// A prescribed temperature history T(t) = scale * curve(t) (curve < 0: constant scale).

@@ -15,6 +15,7 @@ enum class ContactKind {
   forming_one_way_surface_to_surface,    ///< *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE
   automatic_surface_to_surface,          ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (two-way)
   automatic_one_way_surface_to_surface,  ///< *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE
+  automatic_single_surface,              ///< *CONTACT_AUTOMATIC_SINGLE_SURFACE (SSID only)
 };
 
 /// What SSID / MSID name (LS-DYNA's SSTYP / MSTYP codes).
@@ -23,6 +24,7 @@ enum class ContactSideType : int {
   part_set = 2,     ///< *SET_PART_LIST
   part = 3,         ///< one *PART
   node_set = 4,     ///< *SET_NODE_LIST (slave side only)
+  all_parts = 5,    ///< every part (single-surface contacts only)
 };
 
 /// One *CONTACT_..._SURFACE_TO_SURFACE (_ID) keyword: cards 1-3 and optional card A.
@@ -60,6 +62,7 @@ struct ContactDesc {
   double sofscl = 0.1;    ///< SOFSCL: scale factor of the SOFT = 1 stiffness
   double maxpar = 1.025;  ///< MAXPAR: parametric extension of a segment for the projection
   int bsort = 0;          ///< BSORT: cycles between bucket sorts (0: automatic)
+  int ignore = 0;         ///< IGNORE (optional card C): 0 *CONTROL_CONTACT's, 1-2 tracked
   // The tiebreak card (the _TIEBREAK option, right after card 3): docs/contact.md.
   bool tiebreak = false;
   int tiebreak_option = 0;       ///< OPTION: 1-4 (the others are rejected by the reader)
@@ -99,6 +102,7 @@ struct ControlContactDesc {
   int thkchg = 0;       ///< THKCHG: 1 = offsets follow the current shell thickness
   int nsbcs = 0;        ///< NSBCS: cycles between bucket sorts (0: automatic)
   int frceng = 0;       ///< FRCENG: 1 = friction heats the _THERMAL contacts' sides (SOLN 2)
+  int ignore = 0;       ///< IGNORE: initial penetrations 0 pushed out, 1 tracked, 2 tracked+listed
   double sfric = 0.0;   ///< SFRIC: default static friction (contacts with FS = 0)
   double dfric = 0.0;   ///< DFRIC: default dynamic friction
   double edc = 0.0;     ///< EDC: default decay coefficient
