@@ -107,8 +107,14 @@ void BoundaryConditions::constrain(const StepTimes& step, const double* const ol
           v[d][n] = m.scale * c(t_mid);
           break;
         case core::MotionKind::displacement:
-          // Reach the prescribed displacement exactly at the end of the step.
-          v[d][n] = (m.scale * c(t + dt) - u[d][n]) / dt;
+          if (m.birth > 0.0) {
+            // Born later: the curve is read from BIRTH and moves the node on from where it is
+            // then (the step's share of f(t - BIRTH) - f(0)).
+            v[d][n] = m.scale * (c(t + dt - m.birth) - c(std::max(t - m.birth, 0.0))) / dt;
+          } else {
+            // Reach the prescribed displacement exactly at the end of the step.
+            v[d][n] = (m.scale * c(t + dt) - u[d][n]) / dt;
+          }
           break;
         case core::MotionKind::acceleration:
           v[d][n] = old[d][n] + m.scale * c(t) * dt_avg;
@@ -120,7 +126,15 @@ void BoundaryConditions::constrain(const StepTimes& step, const double* const ol
     const auto [ia, ib] = across(m.direction - 3);
     const auto a = static_cast<std::size_t>(ia), b = static_cast<std::size_t>(ib);
     std::array<double, 2> w{};
-    if (m.kind == core::MotionKind::displacement) {
+    if (m.kind == core::MotionKind::displacement && m.birth > 0.0) {
+      // Born later: the curve's angle is read from BIRTH and turns the node on from where it is
+      // then (a folding flap carried along by the panel it hangs on): each step turns the
+      // present position by the step's share of f(t - BIRTH) - f(0).
+      const double ra = x0[a][n] + u[a][n] - m.axis[0];
+      const double rb = x0[b][n] + u[b][n] - m.axis[1];
+      const double turn = m.scale * (c(t + dt - m.birth) - c(std::max(t - m.birth, 0.0)));
+      w = chord_velocity(ra, rb, turn, dt);
+    } else if (m.kind == core::MotionKind::displacement) {
       // The angle at the end of the step turns the initial position about the axis; the step's
       // velocity lands the node there exactly (as for a prescribed displacement), so the node
       // stays on its circle to round-off whatever the step.
