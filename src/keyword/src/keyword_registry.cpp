@@ -101,6 +101,9 @@ KeywordSpec database_spcforc_keyword();
 KeywordSpec control_accuracy_keyword();
 KeywordSpec control_bulk_viscosity_keyword();
 KeywordSpec control_adaptive_keyword();
+KeywordSpec control_adapstep_keyword();
+KeywordSpec control_solid_keyword();
+KeywordSpec interface_springback_lsdyna_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
 KeywordSpec database_sleout_keyword();
@@ -190,6 +193,9 @@ std::span<const KeywordSpec> keyword_registry() {
       control_accuracy_keyword(),
       control_bulk_viscosity_keyword(),
       control_adaptive_keyword(),
+      control_adapstep_keyword(),
+      control_solid_keyword(),
+      interface_springback_lsdyna_keyword(),
       control_output_keyword(),
       control_rigid_keyword(),
       control_hourglass_keyword(),

@@ -273,6 +273,28 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
     check_element_nodes(e, errors);
   }
 
+  // *CONTROL_SHELL ESORT 1/2 asks for a C0 triangle formulation plyform does not have: an
+  // error when there is a triangle to sort (none: the run is LS-DYNA's).
+  if (model.control_shell && model.control_shell->esort != 0) {
+    std::size_t triangles = 0;
+    const model::ElementShellDesc* first = nullptr;
+    for (const model::ElementShellDesc& e : model.shells) {
+      if (e.nodes[2] == e.nodes[3]) {
+        ++triangles;
+        if (first == nullptr)
+          first = &e;
+      }
+    }
+    if (triangles > 0) {
+      errors.push_back(
+          {model.control_shell->where, "*CONTROL_SHELL", "ESORT",
+           cat("ESORT = ", model.control_shell->esort, " sorts the model's ", triangles,
+               " triangular shells (the first: element ", first->id, " at ", at(first->where),
+               ") into a C0 triangle formulation, which plyform does not have; ESORT = 0 runs "
+               "them as degenerate Belytschko-Tsay quadrilaterals")});
+    }
+  }
+
   // Shell elements -> part (with a shell section and a thickness), nodes; node patterns.
   std::unordered_set<int> reported_shell_parts;
   for (const model::ElementShellDesc& e : model.shells) {

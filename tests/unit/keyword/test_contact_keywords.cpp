@@ -330,8 +330,11 @@ TEST(ControlContact, GivenTwiceTheLastWinsWithAWarning) {
 
 TEST(ControlContact, FieldsPlyformDoesNotImplementAreNamed) {
   constexpr std::string_view kKw = "*CONTROL_CONTACT";
-  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,4\n", 2, kKw, "PENOPT", "PENOPT 4 and 5");
-  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,5\n", 2, kKw, "PENOPT", "not supported");
+  expect_error("*CONTROL_CONTACT\n0.1,0,0,0,5\n", 2, kKw, "PENOPT", "PENOPT 5");
+  // PENOPT 4 (area-weighted slave stiffness) is plyform's slave stiffness: read as 3.
+  EXPECT_EQ(read_ok("*CONTROL_CONTACT\n0.1,0,0,0,4\n").model.control_contact->penopt, 3);
+  // IGNORE 1 and 2 are read (initial penetrations tracked).
+  EXPECT_EQ(read_ok("*CONTROL_CONTACT\n0.1\n\n\n2\n").model.control_contact->ignore, 2);
   expect_error("*CONTROL_CONTACT\n-0.1\n", 2, kKw, "SLSFAC", ">= 0");
   expect_error("*CONTROL_CONTACT\n0.1,0,0,3\n", 2, kKw, "SHLTHK", "must be one of 0, 1, 2");
   expect_error("*CONTROL_CONTACT\n0.1,0,0,0,0,2\n", 2, kKw, "THKCHG", "must be one of 0, 1");

@@ -422,5 +422,51 @@ TEST(ControlShell, ReadsLobattoAndRejectsWhatIsNotImplemented) {
   EXPECT_EQ(bad.errors.front().field, "BWC");
 }
 
+// Cards 3 and 4 as LS-PrePost writes them (the metal-forming and coach-peel decks' layouts),
+// ESORT read; what would change the shells or delete elements named.
+TEST(ControlShell, Cards3And4AsLsPrePostWritesThem) {
+  const auto ok = read_deck_text(
+      "*KEYWORD\n*CONTROL_SHELL\n      20.0         1        -1         1         2         2"
+      "         1         0\n       1.0         0         0         1         0\n"
+      "         0         0         0         0         2       0.0       0.0         0\n"
+      "         1         1   6600000         0         0         0       0.0         0\n*END\n",
+      "shell.k");
+  ASSERT_TRUE(ok.ok()) << ok.errors.front().to_string();
+  EXPECT_EQ(ok.model.control_shell->esort, 1);
+  const std::string head = "*CONTROL_SHELL\n20.0,1,-1,1,2,2,1,0\n\n";
+  expect_error(head + "1\n", 4, "*CONTROL_SHELL", "PSSTUPD", "every shell");
+  expect_error(head + "0,0,0,0,0,5.0\n", 4, "*CONTROL_SHELL", "W-MODE", "out of range");
+  expect_error(head + "0,0,0,0,0,0,0,1\n", 4, "*CONTROL_SHELL", "ICRQ", "ICRQ 1");
+  expect_error(head + "\n2\n", 5, "*CONTROL_SHELL", "NFAIL1", "deleting");
+  expect_error(head + "\n\n1\n", 6, "*CONTROL_SHELL", "", "cards 5 and after");
+}
+
+TEST(ControlSolid, ReadAsLsPrePostWritesIt) {
+  const auto ok = read_deck_text(
+      "*KEYWORD\n*CONTROL_SOLID\n         1         0         0         1         0       0.0"
+      "         0         0\n       0       0       0       0       0       0       0       0"
+      "       0       0\n*END\n",
+      "solid.k");
+  ASSERT_TRUE(ok.ok()) << ok.errors.front().to_string();
+  expect_error("*CONTROL_SOLID\n1,0,0,1,5\n", 2, "*CONTROL_SOLID", "PSFAIL", "deletes no");
+  expect_error("*CONTROL_SOLID\n1,1\n", 2, "*CONTROL_SOLID", "FMATRX", "default");
+  expect_error("*CONTROL_SOLID\n1\n0,0,3\n", 3, "*CONTROL_SOLID", "PM3", "must be 0");
+}
+
+// Requests about adaptivity and LS-DYNA's springback file: read and warned about by name.
+TEST(ControlAdapstepAndSpringback, AreReadAndWarnedAbout) {
+  const auto r = read_deck_text(
+      "*KEYWORD\n*CONTROL_ADAPSTEP\n       1.0      0.01\n*INTERFACE_SPRINGBACK_LSDYNA\n"
+      "        11       100         0                   0         0         0         0\n"
+      "*END\n",
+      "forming.k");
+  ASSERT_TRUE(r.ok()) << r.errors.front().to_string();
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_EQ(r.warnings[0].keyword, "*CONTROL_ADAPSTEP");
+  EXPECT_NE(r.warnings[0].message.find("does not refine meshes"), std::string::npos);
+  EXPECT_EQ(r.warnings[1].keyword, "*INTERFACE_SPRINGBACK_LSDYNA");
+  EXPECT_NE(r.warnings[1].message.find("output request not written"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace plyform::keyword

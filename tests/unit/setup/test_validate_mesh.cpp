@@ -361,5 +361,23 @@ TEST(ValidateMesh, RepeatedErrorsAreCountedNotListed) {
       << errors[3].message;
 }
 
+// *CONTROL_SHELL ESORT 1 or 2 sorts triangles into a formulation plyform does not have: an
+// error naming how many there are and the first; without triangles the deck is fine.
+TEST(ValidateMesh, EsortWithTrianglesIsAnError) {
+  const std::string mesh =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n*PART\nsheet\n1,1,1\n"
+      "*SECTION_SHELL\n1\n0.1\n*MAT_ELASTIC\n1,1e-9,100.0,0.3\n"
+      "*CONTROL_SHELL\n20.0,1\n";  // line 15: card 1
+  EXPECT_TRUE(validate_text(mesh + "*ELEMENT_SHELL\n1,1,1,2,3,4\n").empty());
+  const std::vector<Diagnostic> errors =
+      validate_text(mesh + "*ELEMENT_SHELL\n1,1,1,2,3,3\n2,1,1,3,4,4\n");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].keyword, "*CONTROL_SHELL");
+  EXPECT_EQ(errors[0].field, "ESORT");
+  EXPECT_EQ(errors[0].where.line, 15);
+  EXPECT_NE(errors[0].message.find("2 triangular shells (the first: element 1"), std::string::npos)
+      << errors[0].message;
+}
+
 }  // namespace
 }  // namespace plyform::setup

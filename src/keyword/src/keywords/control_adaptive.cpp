@@ -49,7 +49,42 @@ void read_control_adaptive(KeywordInput& in) {
           "(results may differ from LS-DYNA's where it would refine)");
 }
 
+constexpr std::array kAdapstepFields{
+    FieldSpec{.name = "FACTIN",
+              .default_value = 1.0,
+              .unit = "-",
+              .description = "initial relaxation factor of the contact forces in an adaptive "
+                             "step"},
+    FieldSpec{.name = "DFACTR",
+              .default_value = 0.01,
+              .unit = "-",
+              .description = "its increment per step"},
+};
+constexpr std::array kAdapstepCards{
+    CardSpec{.title = "Card 1", .fields = kAdapstepFields, .presence = "required"},
+};
+
+void read_control_adapstep(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line)
+    in.fail(in.keyword().line, "", "missing card 1 (FACTIN DFACTR)");
+  (void)in.read(kAdapstepCards[0], *line);
+  in.warn(in.keyword().line, "",
+          "the contact relaxation of adaptive steps has nothing to act on: plyform does not "
+          "refine meshes yet");
+}
+
 }  // namespace
+
+KeywordSpec control_adapstep_keyword() {
+  return {.name = "CONTROL_ADAPSTEP",
+          .options = kNoOptions,
+          .handler = read_control_adapstep,
+          .cards = kAdapstepCards,
+          .summary =
+              "Contact force relaxation during the steps of h-adaptive remeshing: read "
+              "and warned about (plyform keeps the initial mesh)."};
+}
 
 KeywordSpec control_adaptive_keyword() {
   return {.name = "CONTROL_ADAPTIVE",

@@ -18,7 +18,7 @@ constexpr std::array kZeroOne{0, 1};
 constexpr std::array kZeroToTwo{0, 1, 2};
 constexpr std::array kZeroToThree{0, 1, 2, 3};
 constexpr std::array kZeroToFour{0, 1, 2, 3, 4};
-constexpr std::array kPenopts{0, 1, 2, 3};
+constexpr std::array kPenopts{0, 1, 2, 3, 4};
 
 constexpr std::array kCard1{
     FieldSpec{.name = "SLSFAC",
@@ -44,10 +44,13 @@ constexpr std::array kCard1{
               .type = FieldType::kInteger,
               .unit = "-",
               .description = "penalty stiffness: 1 (or 0) the smaller of slave and master, 2 the "
-                             "master segment's, 3 the slave node's",
+                             "master segment's, 3 the slave node's, 4 the slave node's weighted "
+                             "by the area of its faces (which is how plyform's slave stiffness is "
+                             "made: 4 is 3)",
               .allowed = kPenopts,
-              .allowed_note = "the area- or mass-weighted slave stiffness (PENOPT 4 and 5) is "
-                              "not supported"},
+              .allowed_note = "the slave stiffness inversely proportional to the shell thickness "
+                              "(PENOPT 5, which LS-DYNA itself does not recommend) is not "
+                              "supported"},
     FieldSpec{.name = "THKCHG",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -264,7 +267,11 @@ void read_control_contact(KeywordInput& in) {
   desc.where = in.where(line1->line);
   desc.slsfac = c1.real("SLSFAC") == 0.0 ? 0.1 : c1.real("SLSFAC");
   desc.shlthk = c1.integer("SHLTHK");
-  desc.penopt = c1.integer("PENOPT") == 0 ? 1 : c1.integer("PENOPT");
+  // PENOPT 4 (the slave node's stiffness weighted by area) is PENOPT 3 in plyform: a slave
+  // node's stiffness is already the area-weighted share of its faces' (docs/contact.md).
+  desc.penopt = c1.integer("PENOPT") == 0   ? 1
+                : c1.integer("PENOPT") == 4 ? 3
+                                            : static_cast<int>(c1.integer("PENOPT"));
   desc.thkchg = c1.integer("THKCHG");
   if (const auto line2 = in.next_line()) {
     const CardValues c2 = in.read(kCards[1], *line2);

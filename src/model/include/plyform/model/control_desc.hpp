@@ -76,6 +76,7 @@ struct ControlShellDesc {
   int theory = 2;  ///< THEORY: default shell formulation (2, Belytschko-Tsay)
   int intgrd = 0;  ///< INTGRD: through-thickness rule, 0 Gauss, 1 Lobatto
   int thshel = 0;  ///< THSHEL: 1 = thick thermal shells (a temperature profile through them)
+  int esort = 0;   ///< ESORT: 1-2 sort triangles into a C0 triangle formulation (none here)
   SourceLocation where;
 };
 
