@@ -341,6 +341,20 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                "run DECK -o OUTDIR --restart)\n",
                m.output.d3dump_cycles);
   }
+  if (m.output.elout_dt > 0.0) {
+    // What elout.csv will hold: a row per shell thickness point, one per solid.
+    std::size_t shell_rows = 0;
+    for (const core::BlockElement& h : m.output.history_shells)
+      shell_rows += static_cast<std::size_t>(m.shell_blocks[static_cast<std::size_t>(h.block)].nip);
+    const std::size_t shell_count = m.output.history_shells.size();
+    const std::size_t solid_count = m.output.history_solids.size();
+    fmt::print(out,
+               "elout.csv every {:g}: {} shell element{} ({} thickness point{}), {} solid "
+               "element{}; {} row{} per output time\n",
+               m.output.elout_dt, shell_count, shell_count == 1 ? "" : "s", shell_rows,
+               shell_rows == 1 ? "" : "s", solid_count, solid_count == 1 ? "" : "s",
+               shell_rows + solid_count, shell_rows + solid_count == 1 ? "" : "s");
+  }
   if (dt_min < 1e300) {
     const double dt = m.controls.tssfac * dt_min;
     fmt::print(out,

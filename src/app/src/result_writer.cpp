@@ -20,11 +20,36 @@ constexpr const char* kBndout = "bndout.csv";
 constexpr const char* kSpcforc = "spcforc.csv";
 constexpr const char* kSleout = "sleout.csv";
 constexpr const char* kMatsum = "matsum.csv";
+constexpr const char* kElout = "elout.csv";
 constexpr const char* kRcforc = "rcforc.csv";
 constexpr const char* kInterfaceEnergy = "interface_energy.csv";
 constexpr const char* kCohesive = "cohesive.csv";
 constexpr const char* kHeat = "heat.csv";
 constexpr const char* kTprint = "tprint.csv";
+
+/// A shell point's stress from the element's co-rotational frame (rows e1, e2, e3 in `axes`;
+/// `l` the local tensor, szz = 0) to global axes, sigma_g = sum_ab e_a l_ab e_b, as
+/// xx, yy, zz, xy, yz, zx.
+void shell_stress_to_global(const double* const axes[3], const double l[3][3], double* out) {
+  static constexpr int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  for (int c = 0; c < 6; ++c) {
+    double v = 0.0;
+    for (int a = 0; a < 3; ++a)
+      for (int bb = 0; bb < 3; ++bb)
+        v += axes[a][kPair[c][0]] * l[a][bb] * axes[bb][kPair[c][1]];
+    out[c] = v;
+  }
+}
+
+/// The frame of shell e of `blk` at the current positions; the global axes for a collapsed
+/// element (its stresses are then written as they are kept).
+void current_shell_frame(const core::ShellBlock& blk, const engine::NodalState& ns, std::size_t e,
+                         double e1[3], double e2[3], double e3[3]) {
+  if (!element::shell_frame(blk, ns.x.data(), ns.y.data(), ns.z.data(), e, e1, e2, e3)) {
+    e1[0] = e2[1] = e3[2] = 1.0;
+    e1[1] = e1[2] = e2[0] = e2[2] = e3[0] = e3[1] = 0.0;
+  }
+}
 
 }  // namespace
 
@@ -97,6 +122,19 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
                     std::vector<std::string>{"time", "part", "rigid", "internal", "kinetic",
                                              "hourglass", "momentum_x", "momentum_y", "momentum_z"},
                     at(kMatsum));
+  }
+  if (model.output.elout_dt > 0.0 &&
+      (!model.output.history_shells.empty() || !model.output.history_solids.empty())) {
+    elout_.emplace(
+        outdir / kElout,
+        std::vector<std::string>{"time", "element", "part", "type", "point", "points", "zeta",
+                                 "sxx", "syy", "szz", "sxy", "syz", "szx", "plastic_strain"},
+        at(kElout));
+    for (const core::ShellBlock& b : model.shell_blocks) {
+      std::vector<double> zeta(static_cast<std::size_t>(b.nip)), weight(zeta.size());
+      element::thickness_rule(b.rule, b.nip, zeta.data(), weight.data());
+      shell_zeta_.push_back(std::move(zeta));
+    }
   }
   if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
     rcforc_.emplace(outdir / output::rcforc_file_name, at(kRcforc));
@@ -211,25 +249,15 @@ void ResultWriter::state(const engine::Snapshot& s) {
     const auto nip = static_cast<std::size_t>(st.nip);
     for (std::size_t e = 0; e < blk.size(); ++e, ++cell) {
       double e1[3], e2[3], e3[3];
-      if (!element::shell_frame(blk, ns.x.data(), ns.y.data(), ns.z.data(), e, e1, e2, e3)) {
-        e1[0] = e2[1] = e3[2] = 1.0;
-        e1[1] = e1[2] = e2[0] = e2[2] = e3[0] = e3[1] = 0.0;
-      }
+      current_shell_frame(blk, ns, e, e1, e2, e3);
       const double* axes[3] = {e1, e2, e3};
       const auto global = [&](double w_lo, std::size_t lo, std::size_t hi, double* out) {
-        // Local tensor (szz = 0) at the weighted point, then sigma_g = sum_ab e_a sigma_ab e_b.
+        // Local tensor (szz = 0) at the weighted point, then to global axes.
         const auto at = [&](int c) {
           return w_lo * st.s[c][e * nip + lo] + (1.0 - w_lo) * st.s[c][e * nip + hi];
         };
         const double l[3][3] = {{at(0), at(2), at(4)}, {at(2), at(1), at(3)}, {at(4), at(3), 0.0}};
-        static constexpr int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
-        for (int c = 0; c < 6; ++c) {
-          double v = 0.0;
-          for (int a = 0; a < 3; ++a)
-            for (int bb = 0; bb < 3; ++bb)
-              v += axes[a][kPair[c][0]] * l[a][bb] * axes[bb][kPair[c][1]];
-          out[c] = v;
-        }
+        shell_stress_to_global(axes, l, out);
       };
       const std::size_t mid_hi = nip / 2, mid_lo = (nip - 1) / 2;
       global(0.5, mid_lo, mid_hi, &stress_[6 * cell]);
@@ -361,6 +389,56 @@ void ResultWriter::part_energies(double time, const std::vector<engine::PartEner
   }
 }
 
+void ResultWriter::element_histories(const engine::Snapshot& s) {
+  if (!elout_)
+    return;
+  // Solids first, then shells (LS-DYNA's elout order), each in the order the deck names them.
+  for (const core::BlockElement& h : model_.output.history_solids) {
+    const core::SolidBlock& blk = model_.solid_blocks[static_cast<std::size_t>(h.block)];
+    const element::SolidBlockState& st = (*s.solids)[static_cast<std::size_t>(h.block)];
+    const auto e = static_cast<std::size_t>(h.element);
+    // ELFORM 1: its one point; ELFORM 2: the mean of its eight (LS-DYNA's elout default).
+    const auto points = static_cast<std::size_t>(st.points);
+    double mean[7] = {};
+    for (std::size_t q = e * points; q < (e + 1) * points; ++q) {
+      for (int c = 0; c < 6; ++c)
+        mean[c] += st.s[c][q];
+      mean[6] += st.eps_p[q];
+    }
+    for (double& v : mean)
+      v /= static_cast<double>(points);
+    elout_->row_mixed(
+        {s.time, static_cast<std::int64_t>(blk.element_id[e]),
+         static_cast<std::int64_t>(model_.parts[static_cast<std::size_t>(blk.part)].id),
+         std::string_view("solid"), std::int64_t{1}, std::int64_t{1}, std::string_view(), mean[0],
+         mean[1], mean[2], mean[3], mean[4], mean[5], mean[6]});
+  }
+  for (const core::BlockElement& h : model_.output.history_shells) {
+    const auto b = static_cast<std::size_t>(h.block);
+    const core::ShellBlock& blk = model_.shell_blocks[b];
+    const element::ShellBlockState& st = (*s.shells)[b];
+    const auto e = static_cast<std::size_t>(h.element);
+    const auto nip = static_cast<std::size_t>(st.nip);
+    double e1[3], e2[3], e3[3];
+    current_shell_frame(blk, *s.nodes, e, e1, e2, e3);
+    const double* axes[3] = {e1, e2, e3};
+    const auto element = static_cast<std::int64_t>(blk.element_id[e]);
+    const auto part =
+        static_cast<std::int64_t>(model_.parts[static_cast<std::size_t>(blk.part)].id);
+    for (std::size_t k = 0; k < nip; ++k) {
+      const std::size_t q = e * nip + k;
+      const double l[3][3] = {{st.s[0][q], st.s[2][q], st.s[4][q]},
+                              {st.s[2][q], st.s[1][q], st.s[3][q]},
+                              {st.s[4][q], st.s[3][q], 0.0}};
+      double g[6];
+      shell_stress_to_global(axes, l, g);
+      elout_->row_mixed({s.time, element, part, std::string_view("shell"),
+                         static_cast<std::int64_t>(k + 1), static_cast<std::int64_t>(nip),
+                         shell_zeta_[b][k], g[0], g[1], g[2], g[3], g[4], g[5], st.eps_p[q]});
+    }
+  }
+}
+
 void ResultWriter::contact_forces(double time,
                                   const std::vector<contact::InterfaceReport>& interfaces) {
   if (!rcforc_)
@@ -461,6 +539,8 @@ void ResultWriter::save_state(core::StateArchive& archive) {
     put(kSleout, *sleout_);
   if (matsum_)
     put(kMatsum, *matsum_);
+  if (elout_)
+    put(kElout, *elout_);
   if (rcforc_)
     put(kRcforc, rcforc_->csv());
   if (interface_energy_)

@@ -1,9 +1,9 @@
 #pragma once
 // The engine's OutputSink for `plyform run`: ParaView states (results.pvd + results_NNNN.vtu),
 // glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, spcforc.csv, matsum.csv,
-// rcforc.csv, interface_energy.csv and sleout.csv (contacts), cohesive.csv (history nodes of
-// cohesive interfaces), heat.csv and tprint.csv (computed temperatures) and the progress line,
-// in OUTDIR.
+// elout.csv (history elements), rcforc.csv, interface_energy.csv and sleout.csv (contacts),
+// cohesive.csv (history nodes of cohesive interfaces), heat.csv and tprint.csv (computed
+// temperatures) and the progress line, in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -36,6 +36,7 @@ class ResultWriter : public engine::OutputSink {
   void interface_energies(double time,
                           const std::vector<contact::InterfaceReport>& interfaces) override;
   void part_energies(double time, const std::vector<engine::PartEnergies>& parts) override;
+  void element_histories(const engine::Snapshot& s) override;
   void contact_forces(double time,
                       const std::vector<contact::InterfaceReport>& interfaces) override;
   void heat(double time, const thermal::HeatLedger& ledger) override;
@@ -58,6 +59,8 @@ class ResultWriter : public engine::OutputSink {
   std::vector<core::Index> spcforc_nodes_;  // nodes with a translation held, in index order
   std::optional<output::CsvHistory> sleout_;
   std::optional<output::CsvHistory> matsum_;
+  std::optional<output::CsvHistory> elout_;
+  std::vector<std::vector<double>> shell_zeta_;  // per shell block: its points' zeta in [-1, 1]
   std::optional<output::CsvHistory> interface_energy_;
   std::optional<output::CohesiveFile> cohesive_;
   std::optional<output::CsvHistory> heat_;    // heat.csv (temperatures computed)

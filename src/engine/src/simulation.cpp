@@ -168,7 +168,7 @@ struct Simulation::State {
   // Output clocks.
   double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
   double next_bndout = 0.0, next_tprint = 0.0, next_heat = 0.0;
-  double next_spcforc = 0.0, next_sleout = 0.0, next_matsum = 0.0;
+  double next_spcforc = 0.0, next_sleout = 0.0, next_matsum = 0.0, next_elout = 0.0;
   // Each deformable block's share of the nodal masses (*DATABASE_MATSUM only).
   std::vector<BlockMass> solid_mass, shell_mass;
   bool warned_thermal = false;    // a thermal step's iterations did not converge
@@ -918,7 +918,9 @@ void Simulation::State::write_outputs(bool last) {
   const bool want_glstat = out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last);
   const bool want_nodout =
       out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last);
-  if (want_state || want_nodout)
+  // elout.csv turns the shells' stresses to global axes in their current frames.
+  const bool want_elout = out.elout_dt > 0.0 && (t + eps_t >= next_elout || last);
+  if (want_state || want_nodout || want_elout)
     sync();
   if (want_state) {
     sink.state(snapshot());
@@ -986,6 +988,11 @@ void Simulation::State::write_outputs(bool last) {
     sink.part_energies(t, part_energies());
     while (next_matsum <= t + eps_t)
       next_matsum += out.matsum_dt;
+  }
+  if (want_elout) {
+    sink.element_histories(snapshot());
+    while (next_elout <= t + eps_t)
+      next_elout += out.elout_dt;
   }
 }
 
@@ -1249,6 +1256,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.value("spcforc", next_spcforc);
     a.value("sleout", next_sleout);
     a.value("matsum", next_matsum);
+    a.value("elout", next_elout);
     a.value("tprint", next_tprint);
     a.value("heat", next_heat);
     a.value("heat_written_at", heat_written_at);

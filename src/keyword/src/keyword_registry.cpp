@@ -110,6 +110,9 @@ KeywordSpec database_sleout_keyword();
 KeywordSpec database_matsum_keyword();
 KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
+KeywordSpec database_elout_keyword();
+KeywordSpec database_history_shell_keyword();
+KeywordSpec database_history_solid_keyword();
 
 std::span<const KeywordSpec> keyword_registry() {
   static const std::array kRegistry{
@@ -216,6 +219,9 @@ std::span<const KeywordSpec> keyword_registry() {
       database_matsum_keyword(),
       database_tprint_keyword(),
       database_history_node_keyword(),
+      database_elout_keyword(),
+      database_history_shell_keyword(),
+      database_history_solid_keyword(),
   };
   return kRegistry;
 }

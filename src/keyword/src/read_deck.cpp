@@ -1,5 +1,6 @@
 #include "plyform/keyword/read_deck.hpp"
 
+#include "keywords/database_histories.hpp"
 #include "keywords/set_list.hpp"
 #include "reader_session.hpp"
 
@@ -10,6 +11,7 @@ namespace {
 ReadResult finish(ReaderSession& session) {
   ReadResult result = session.take_result();
   expand_generated_sets(result.model, result.errors);
+  warn_unpaired_element_histories(result.model, result.warnings);
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <variant>
 
 #include "build_contact.hpp"
@@ -516,6 +517,54 @@ struct Builder {
 }  // namespace
 
 BuildResult build(const model::ModelDesc& desc) {
+/// The *DATABASE_HISTORY_SHELL / _SOLID elements as block elements, once the blocks are coloured
+/// (colouring reorders a block's elements). An element named twice is written once; an element
+/// of a rigid part has no stresses to write (warned about). Without *DATABASE_ELOUT (or with
+/// DT 0) nothing is kept: the reader has warned about it.
+void element_histories(const model::ModelDesc& d, core::Model& m,
+                       std::vector<keyword::Diagnostic>& warnings) {
+  if (!d.elout || d.elout->dt <= 0.0)
+    return;
+  std::unordered_map<core::GlobalId, core::BlockElement> solid_at, shell_at;
+  for (std::size_t b = 0; b < m.solid_blocks.size(); ++b) {
+    const core::SolidBlock& blk = m.solid_blocks[b];
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      solid_at.emplace(blk.element_id[e],
+                       core::BlockElement{static_cast<Index>(b), static_cast<Index>(e)});
+  }
+  for (std::size_t b = 0; b < m.shell_blocks.size(); ++b) {
+    const core::ShellBlock& blk = m.shell_blocks[b];
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      shell_at.emplace(blk.element_id[e],
+                       core::BlockElement{static_cast<Index>(b), static_cast<Index>(e)});
+  }
+  std::unordered_set<core::GlobalId> seen_solid, seen_shell;
+  for (const model::DatabaseHistoryElementDesc& h : d.history_elements) {
+    auto& at = h.shell ? shell_at : solid_at;
+    auto& seen = h.shell ? seen_shell : seen_solid;
+    auto& list = h.shell ? m.output.history_shells : m.output.history_solids;
+    for (std::size_t i = 0; i < h.element_ids.size(); ++i) {
+      const auto it = at.find(h.element_ids[i]);
+      if (it == at.end() || !seen.insert(h.element_ids[i]).second)
+        continue;  // undefined: validate reported it
+      const Index part = h.shell ? m.shell_blocks[static_cast<std::size_t>(it->second.block)].part
+                                 : m.solid_blocks[static_cast<std::size_t>(it->second.block)].part;
+      const core::Part& p = m.parts[static_cast<std::size_t>(part)];
+      if (std::holds_alternative<core::RigidMaterial>(
+              m.materials[static_cast<std::size_t>(p.material)])) {
+        warnings.push_back(
+            {h.ids_where[i], h.shell ? "*DATABASE_HISTORY_SHELL" : "*DATABASE_HISTORY_SOLID", "",
+             "element " + std::to_string(h.element_ids[i]) + " is in rigid part " +
+                 std::to_string(p.id) + ": it has no stresses, so it is not in elout.csv"});
+        continue;
+      }
+      list.push_back(it->second);
+    }
+  }
+  if (!m.output.history_shells.empty() || !m.output.history_solids.empty())
+    m.output.elout_dt = d.elout->dt;
+}
+
   Builder b{desc, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   b.m.title = desc.title;
   b.nodes();
@@ -533,6 +582,7 @@ BuildResult build(const model::ModelDesc& desc) {
   // Contacts last: they read the final (coloured) element blocks.
   build_contacts(desc, b.m, b.out.errors, b.out.warnings);
   build_temperatures(desc, b.m, b.out.errors);
+  element_histories(desc, b.m, b.out.warnings);
   build_thermal(desc, b.m, b.out.errors, b.out.warnings);
   build_thermal_expansion(desc, b.m, b.out.errors, b.out.warnings);
   if (b.out.errors.empty())

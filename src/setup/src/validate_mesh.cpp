@@ -496,6 +496,19 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
       }
     }
   }
+  // Element histories (elout.csv) -> shells, solids; each kind its own id range.
+  for (const model::DatabaseHistoryElementDesc& h : model.history_elements) {
+    const IdTable& table = h.shell ? shell_elements : elements;
+    for (std::size_t i = 0; i < h.element_ids.size(); ++i) {
+      if (!table.contains(h.element_ids[i])) {
+        errors.push_back(
+            {h.ids_where[i], h.shell ? "*DATABASE_HISTORY_SHELL" : "*DATABASE_HISTORY_SOLID",
+             h.headings.empty() ? "EID" : "ID",
+             cat(h.shell ? "shell" : "solid", " element ", h.element_ids[i], " is not defined (no ",
+                 h.shell ? "*ELEMENT_SHELL" : "*ELEMENT_SOLID", " with this id)")});
+      }
+    }
+  }
   if (model.d3plot && model.d3plot->part_set_id != 0) {
     check_ref(part_sets, model.d3plot->part_set_id, model.d3plot->where, "*DATABASE_BINARY_D3PLOT",
               "PSETID", errors);

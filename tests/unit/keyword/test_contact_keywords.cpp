@@ -390,13 +390,13 @@ TEST(DatabaseOutputs, OutputRequestsPlyformDoesNotWriteAreWarnedAboutNotRejected
   // Unknown output keywords (one with an option), with cards of their own.
   const ReadResult r = read_ok(
       "*DATABASE_SECFORC\n1e-4\n*DATABASE_EXTENT_BINARY\n0,0,3,1\n0,0,0,0,0\n"
-      "*DATABASE_HISTORY_SHELL_ID\n7\n*DATABASE_GLSTAT\n1e-3\n");
+      "*DATABASE_HISTORY_SHELL_SET\n7\n*DATABASE_GLSTAT\n1e-3\n");
   ASSERT_EQ(r.warnings.size(), 3u);
   EXPECT_EQ(r.warnings[0].keyword, "*DATABASE_SECFORC");
   EXPECT_EQ(r.warnings[0].where.line, 1);
   EXPECT_NE(r.warnings[0].message.find("not written"), std::string::npos);
   EXPECT_EQ(r.warnings[1].keyword, "*DATABASE_EXTENT_BINARY");
-  EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_SHELL_ID");
+  EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_SHELL_SET");
   ASSERT_EQ(r.model.ascii_outputs.size(), 1u);  // the cards passed over are not read as others
   EXPECT_EQ(r.model.ascii_outputs[0].name, "GLSTAT");
   // Any other keyword plyform does not know stays an error.

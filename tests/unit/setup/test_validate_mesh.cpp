@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "plyform/keyword/read_deck.hpp"
+#include "plyform/setup/build.hpp"
 #include "plyform/setup/validate.hpp"
 #include "plyform/setup/validate_mesh.hpp"
 
@@ -377,6 +378,72 @@ TEST(ValidateMesh, EsortWithTrianglesIsAnError) {
   EXPECT_EQ(errors[0].where.line, 15);
   EXPECT_NE(errors[0].message.find("2 triangular shells (the first: element 1"), std::string::npos)
       << errors[0].message;
+}
+
+}  // namespace
+}  // namespace plyform::setup
+
+namespace plyform::setup {
+namespace {
+
+// Two shells and a hexahedron sharing nothing: shells 1-2 of part 1, rigid shell 3 of part 2,
+// solid 10 of part 3 (lines 1-43); the history keywords follow.
+std::string elout_deck(const std::string& histories) {
+  return "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,2,0,0\n6,2,1,0\n"
+         "11,0,0,5\n12,1,0,5\n13,1,1,5\n14,0,1,5\n15,0,0,6\n16,1,0,6\n17,1,1,6\n18,0,1,6\n"
+         "*PART\nsheet\n1,1,1\n*PART\ntool\n2,1,2\n*PART\nblock\n3,2,1\n"
+         "*SECTION_SHELL\n1,2,0.8333,5\n0.1\n*SECTION_SOLID\n2,1\n"
+         "*MAT_ELASTIC\n1,1e-9,100.0,0.3\n*MAT_RIGID\n2,1e-9,100.0,0.3\n"
+         "*ELEMENT_SHELL\n1,1,1,2,3,4\n2,1,2,5,6,3\n3,2,1,2,3,4\n"
+         "*ELEMENT_SOLID\n10,3,11,12,13,14,15,16,17,18\n*CONTROL_TERMINATION\n1.0\n"
+         "*DATABASE_ELOUT\n0.1\n" +
+         histories;
+}
+
+// An element the history keywords name must exist, in its own id range (a shell id is no
+// solid id): a located error naming the kind and the id.
+TEST(ValidateMesh, HistoryElementsMustBeDefined) {
+  const keyword::ReadResult read = keyword::read_deck_text(
+      elout_deck("*DATABASE_HISTORY_SHELL\n2,12\n*DATABASE_HISTORY_SOLID_ID\n1,a shell id\n"),
+      "deck.k");
+  ASSERT_TRUE(read.ok()) << all(read.errors);
+  const std::vector<Diagnostic> errors = validate(read.model);
+  ASSERT_EQ(errors.size(), 2u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:45: *DATABASE_HISTORY_SHELL: field EID: shell element 12 is not defined (no "
+            "*ELEMENT_SHELL with this id)");
+  EXPECT_EQ(errors[1].to_string(),
+            "deck.k:47: *DATABASE_HISTORY_SOLID: field ID: solid element 1 is not defined (no "
+            "*ELEMENT_SOLID with this id)");
+}
+
+// The build finds each history element in its block (after colouring), keeps each once, in
+// deck order, and leaves out a rigid part's element with a warning.
+TEST(ValidateMesh, HistoryElementsAreFoundInTheirBlocks) {
+  const keyword::ReadResult read = keyword::read_deck_text(
+      elout_deck("*DATABASE_HISTORY_SHELL\n2,1,3,2\n*DATABASE_HISTORY_SOLID\n10\n"), "deck.k");
+  ASSERT_TRUE(read.ok()) << all(read.errors);
+  ASSERT_TRUE(validate(read.model).empty()) << all(validate(read.model));
+  const BuildResult built = build(read.model);
+  ASSERT_TRUE(built.model) << all(built.errors);
+  const core::Model& m = *built.model;
+  EXPECT_DOUBLE_EQ(m.output.elout_dt, 0.1);
+  ASSERT_EQ(m.output.history_shells.size(), 2u);
+  const auto id_of = [&](const core::BlockElement& h) {
+    return m.shell_blocks[static_cast<std::size_t>(h.block)]
+        .element_id[static_cast<std::size_t>(h.element)];
+  };
+  EXPECT_EQ(id_of(m.output.history_shells[0]), 2);
+  EXPECT_EQ(id_of(m.output.history_shells[1]), 1);
+  ASSERT_EQ(m.output.history_solids.size(), 1u);
+  const core::BlockElement& solid = m.output.history_solids[0];
+  EXPECT_EQ(m.solid_blocks[static_cast<std::size_t>(solid.block)]
+                .element_id[static_cast<std::size_t>(solid.element)],
+            10);
+  ASSERT_EQ(built.warnings.size(), 1u) << all(built.warnings);
+  EXPECT_EQ(built.warnings[0].to_string(),
+            "deck.k:45: *DATABASE_HISTORY_SHELL: element 3 is in rigid part 2: it has no "
+            "stresses, so it is not in elout.csv");
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // *DATABASE_BINARY_D3PLOT, *DATABASE_BINARY_D3DUMP, *DATABASE_GLSTAT, *DATABASE_NODOUT,
-// *DATABASE_RCFORC, *DATABASE_BNDOUT, *DATABASE_TPRINT, *DATABASE_HISTORY_NODE(_ID).
+// *DATABASE_RCFORC, *DATABASE_BNDOUT, *DATABASE_TPRINT, *DATABASE_HISTORY_NODE(_ID),
+// *DATABASE_ELOUT, *DATABASE_HISTORY_SHELL(_ID), *DATABASE_HISTORY_SOLID(_ID).
 #include <array>
+
+#include "database_histories.hpp"
 
 #include "../keyword_registry.hpp"
 #include "common_cards.hpp"
@@ -289,7 +292,153 @@ void read_history_node(KeywordInput& in) {
   in.model().history_nodes.push_back(std::move(d));
 }
 
+// --- *DATABASE_ELOUT: the ASCII card with LS-DYNA's four extra-variable counts.
+constexpr FieldSpec elout_option(std::string_view name, std::string_view what) {
+  return FieldSpec{
+      .name = name, .type = FieldType::kInteger, .min_value = 0, .unit = "-", .description = what};
+}
+constexpr std::array kEloutFields{
+    kAsciiFields[0],
+    kAsciiFields[1],
+    kAsciiFields[2],
+    kAsciiFields[3],
+    elout_option("OPTION1",
+                 "extra history variables per solid integration point: none written (a value "
+                 "> 0 is warned about; the plastic strain is always written)"),
+    elout_option("OPTION2",
+                 "extra history variables per shell integration point: none written (a value "
+                 "> 0 is warned about)"),
+    elout_option("OPTION3",
+                 "extra history variables per thick-shell point: plyform has no thick shells "
+                 "(a value > 0 is warned about)"),
+    elout_option("OPTION4",
+                 "extra history variables per beam point: plyform has no beams (a value > 0 "
+                 "is warned about)"),
+};
+constexpr std::array kEloutCards{
+    CardSpec{.title = "Card 1", .fields = kEloutFields, .presence = "required"},
+};
+
+void read_elout(KeywordInput& in) {
+  const auto line = in.next_line();
+  if (!line) {
+    in.fail(in.keyword().line, "", "missing card 1 (DT BINARY LCUR IOOPT OPTION1..OPTION4)");
+  }
+  const CardValues v = in.read(kEloutCards[0], *line);
+  model::DatabaseEloutDesc d{.dt = v.real("DT"),
+                             .binary = v.integer("BINARY"),
+                             .lcur = v.integer("LCUR"),
+                             .ioopt = v.integer("IOOPT"),
+                             .option1 = v.integer("OPTION1"),
+                             .option2 = v.integer("OPTION2"),
+                             .option3 = v.integer("OPTION3"),
+                             .option4 = v.integer("OPTION4"),
+                             .where = in.where(line->line)};
+  require_zero(in, line->line, "LCUR", d.lcur, "a curve of the output interval");
+  // Extra history variables change only what LS-DYNA adds to its file: elout.csv is written
+  // with its own columns, so a request for them is a warning, not an error.
+  const std::array<std::pair<std::string_view, int>, 4> options{{{"OPTION1", d.option1},
+                                                                 {"OPTION2", d.option2},
+                                                                 {"OPTION3", d.option3},
+                                                                 {"OPTION4", d.option4}}};
+  for (const auto& [name, value] : options) {
+    if (value != 0) {
+      in.warn(line->line, std::string(name),
+              fmt::format("{} extra history variable{} per integration point not written: "
+                          "elout.csv holds the stresses and the effective plastic strain only{}",
+                          value, value == 1 ? "" : "s",
+                          name == "OPTION3"   ? " (plyform has no thick shells)"
+                          : name == "OPTION4" ? " (plyform has no beams)"
+                                              : ""));
+    }
+  }
+  store_once(in, in.model().elout, d);
+}
+
+// --- *DATABASE_HISTORY_SHELL(_ID), *DATABASE_HISTORY_SOLID(_ID)
+constexpr FieldSpec history_element_field() {
+  return FieldSpec{.name = "EID",
+                   .type = FieldType::kInteger,
+                   .min_value = 0,
+                   .unit = "-",
+                   .description = "element id (blank or 0: none)"};
+}
+constexpr std::array kHistoryElementFields{history_element_field(), history_element_field(),
+                                           history_element_field(), history_element_field(),
+                                           history_element_field(), history_element_field(),
+                                           history_element_field(), history_element_field()};
+constexpr std::array kHistoryElementIdFields{
+    FieldSpec{.name = "ID",
+              .type = FieldType::kInteger,
+              .min_value = 1,
+              .unit = "-",
+              .description = "element id",
+              .required = true},
+    FieldSpec{.name = "HEADING",
+              .type = FieldType::kText,
+              .width = 70,
+              .description = "a name for the element's history (not written)",
+              .rest_of_line = true},
+};
+constexpr std::array kHistoryElementCards{
+    CardSpec{.title = "Element cards",
+             .fields = kHistoryElementFields,
+             .presence = "without _ID: eight element ids per card, until the next keyword",
+             .numbering = FieldNumbering::kSequential},
+    CardSpec{.title = "Element cards (_ID)",
+             .fields = kHistoryElementIdFields,
+             .presence = "with _ID: one element per card, until the next keyword"},
+};
+
+void read_history_element(KeywordInput& in, bool shell) {
+  model::DatabaseHistoryElementDesc d;
+  d.shell = shell;
+  d.where = in.keyword_where();
+  const bool with_id = in.option() == "ID";
+  int card = 0;
+  while (const auto line = in.next_nonblank_line()) {
+    if (with_id) {
+      const CardValues v = in.read(kHistoryElementCards[1], *line);
+      d.element_ids.push_back(v.integer("ID"));
+      d.headings.push_back(v.text("HEADING"));
+      d.ids_where.push_back(in.where(line->line));
+      continue;
+    }
+    const CardValues v = in.read(kHistoryElementCards[0], *line, card++);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (const int id = static_cast<int>(v.at(i).integer); id != 0) {
+        d.element_ids.push_back(id);
+        d.ids_where.push_back(in.where(line->line));
+      }
+    }
+  }
+  in.model().history_elements.push_back(std::move(d));
+}
+
 }  // namespace
+
+void warn_unpaired_element_histories(const model::ModelDesc& model,
+                                     std::vector<Diagnostic>& warnings) {
+  std::size_t ids = 0;
+  for (const model::DatabaseHistoryElementDesc& h : model.history_elements)
+    ids += h.element_ids.size();
+  if (model.elout && ids == 0) {
+    warnings.push_back({model.elout->where, "*DATABASE_ELOUT", "",
+                        "nothing to write: no *DATABASE_HISTORY_SHELL or *DATABASE_HISTORY_SOLID "
+                        "element, so elout.csv is not written"});
+  }
+  if (!model.elout) {
+    for (const model::DatabaseHistoryElementDesc& h : model.history_elements) {
+      if (h.element_ids.empty())
+        continue;
+      warnings.push_back(
+          {h.where, h.shell ? "*DATABASE_HISTORY_SHELL" : "*DATABASE_HISTORY_SOLID", "",
+           fmt::format("{} element{} kept, but no elout.csv is written without *DATABASE_ELOUT "
+                       "(its DT sets the interval)",
+                       h.element_ids.size(), h.element_ids.size() == 1 ? "" : "s")});
+    }
+  }
+}
 
 KeywordSpec database_binary_d3plot_keyword() {
   return {.name = "DATABASE_BINARY_D3PLOT",
@@ -401,6 +550,42 @@ KeywordSpec database_history_node_keyword() {
           .summary =
               "Nodes written to nodout.csv (and tprint.csv): by id, by id with a heading "
               "(_ID), or every node of node sets (_SET)."};
+}
+
+KeywordSpec database_elout_keyword() {
+  return {.name = "DATABASE_ELOUT",
+          .options = kNoOptions,
+          .handler = read_elout,
+          .cards = kEloutCards,
+          .summary =
+              "The interval of elout.csv: the stresses (global axes) and effective plastic "
+              "strain of the *DATABASE_HISTORY_SHELL and *DATABASE_HISTORY_SOLID elements at "
+              "their integration points (docs/outputs.md). Without history elements it is "
+              "warned about and nothing is written. Given twice, the last one is used (with a "
+              "warning)."};
+}
+
+KeywordSpec database_history_shell_keyword() {
+  return {.name = "DATABASE_HISTORY_SHELL",
+          .options = kNoneOrId,
+          .handler = [](KeywordInput& in) { read_history_element(in, true); },
+          .cards = kHistoryElementCards,
+          .summary =
+              "Shell elements written to elout.csv (every through-thickness point): by id, or "
+              "by id with a heading (_ID). An id no *ELEMENT_SHELL defines is an error. _SET "
+              "is not read (plyform has no shell sets): warned about as an output request."};
+}
+
+KeywordSpec database_history_solid_keyword() {
+  return {.name = "DATABASE_HISTORY_SOLID",
+          .options = kNoneOrId,
+          .handler = [](KeywordInput& in) { read_history_element(in, false); },
+          .cards = kHistoryElementCards,
+          .summary =
+              "Solid elements written to elout.csv (one row per element: the point of ELFORM "
+              "1, the mean of the eight points of ELFORM 2): by id, or by id with a heading "
+              "(_ID). An id no *ELEMENT_SOLID defines is an error. _SET is not read (plyform "
+              "has no solid sets): warned about as an output request."};
 }
 
 }  // namespace plyform::keyword

@@ -166,6 +166,13 @@ struct OutputRequests {
   double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
   double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
   double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
+/// An element of a block (elout.csv): the block's index in Model::solid_blocks or
+/// shell_blocks and the element's index in it (after colouring).
+struct BlockElement {
+  Index block = 0;
+  Index element = 0;
+};
+
   double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
   double spcforc_dt = 0.0;           ///< *DATABASE_SPCFORC (0: none): spcforc.csv
@@ -175,9 +182,13 @@ struct OutputRequests {
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
   double tprint_dt = 0.0;            ///< *DATABASE_TPRINT (0: none): tprint.csv, heat.csv
 };
+  double elout_dt = 0.0;             ///< *DATABASE_ELOUT (0: none or no element): elout.csv
 
 struct Model {
   std::string title;
+  /// *DATABASE_HISTORY_SHELL and _SOLID (elout.csv), in deck order.
+  std::vector<BlockElement> history_shells;
+  std::vector<BlockElement> history_solids;
   // Nodes (reference configuration).
   std::vector<GlobalId> node_id;
   std::vector<double> x0, y0, z0;

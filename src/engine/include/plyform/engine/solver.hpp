@@ -83,6 +83,10 @@ class OutputSink {
                                   const std::vector<contact::InterfaceReport>& /*interfaces*/) {}
   /// At the matsum interval: each part's books, in the order of the model's parts.
   virtual void part_energies(double /*time*/, const std::vector<PartEnergies>& /*parts*/) {}
+  /// At the elout interval when the model has history elements: their stresses and plastic
+  /// strains are in `s.solids` and `s.shells` (shells' in their co-rotational frames), the
+  /// current positions (for those frames) in `s.nodes->x, y, z`.
+  virtual void element_histories(const Snapshot& /*s*/) {}
   /// When temperatures are computed, at the tprint interval (the glstat interval without
   /// *DATABASE_TPRINT) and at the end: the heat books since t = 0.
   virtual void heat(double /*time*/, const thermal::HeatLedger& /*ledger*/) {}

@@ -33,6 +33,31 @@ struct DatabaseAsciiDesc {
   SourceLocation where;
 };
 
+/// *DATABASE_ELOUT: the interval of elout.csv (stresses and plastic strain of the
+/// *DATABASE_HISTORY_SHELL / _SOLID elements at their integration points).
+struct DatabaseEloutDesc {
+  double dt = 0.0;  ///< DT: interval, time units
+  int binary = 0;   ///< BINARY: 0/1 ASCII, 2 binout, 3 both; plyform writes CSV always
+  int lcur = 0;     ///< LCUR: must be 0 (an interval curve is not supported yet)
+  int ioopt = 1;    ///< IOOPT, as written
+  /// OPTION1..OPTION4: extra history variables per integration point of solids, shells, thick
+  /// shells and beams (LS-DYNA's); plyform writes none of them, a non-zero value is warned.
+  int option1 = 0;
+  int option2 = 0;
+  int option3 = 0;
+  int option4 = 0;
+  SourceLocation where;
+};
+
+/// *DATABASE_HISTORY_SHELL / *DATABASE_HISTORY_SOLID (_ID): elements written to elout.csv.
+struct DatabaseHistoryElementDesc {
+  bool shell = true;                      ///< _SHELL (else _SOLID)
+  std::vector<int> element_ids;           ///< in deck order
+  std::vector<std::string> headings;      ///< _ID: the HEADING of each element; empty otherwise
+  std::vector<SourceLocation> ids_where;  ///< the card line of each element id
+  SourceLocation where;                   ///< the keyword line
+};
+
 /// *DATABASE_HISTORY_NODE (_ID): nodes written to nodout.csv.
 struct DatabaseHistoryNodeDesc {
   std::vector<int> node_ids;               ///< in deck order

@@ -109,6 +109,8 @@ struct ModelDesc {
   std::optional<DatabaseBinaryD3dumpDesc> d3dump;
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
   std::vector<DatabaseHistoryNodeDesc> history_nodes;
+  std::optional<DatabaseEloutDesc> elout;
+  std::vector<DatabaseHistoryElementDesc> history_elements;  ///< _SHELL and _SOLID, deck order
 
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened
   /// FNV-1a (64 bit) over the text of every file read, in reading order: a checkpoint belongs
