@@ -6,10 +6,11 @@
 restart_shell.k  the three-layer square cup (examples/square_cup: rigid punch, die and blank
                  holder, friction contacts, cohesive interfaces between the layers), coarse
                  (10 elements along the quarter blank's edge) and drawn 2 mm; a checkpoint
-                 every 1000 cycles; spcforc.csv, matsum.csv and sleout.csv on glstat's
-                 interval.
+                 every 1000 cycles; spcforc.csv, matsum.csv, sleout.csv and elout.csv (the
+                 first and last shell of the blank's first layer) on glstat's interval.
 restart_solid.k  decks/block_threads.k (576 elastic hex8, one face clamped, the other pulled,
-                 a lateral initial velocity); a checkpoint every 50 cycles.
+                 a lateral initial velocity); a checkpoint every 50 cycles; elout.csv (the
+                 first and last hexahedron) on glstat's interval.
 restart_thermal.k the same block with computed temperatures (SOLN 2, a thermal step every few
                  mechanical steps, TSF 1e5): the clamped face held at 500 K, the rest starting
                  at 300 K, of *MAT_ELASTIC_PLASTIC_THERMAL (yielding, expanding, heated by its
@@ -36,15 +37,39 @@ def with_checkpoints(path, cycles):
         f.write(text)
 
 
-def with_part_outputs(path):
-    """Adds *DATABASE_SPCFORC, _MATSUM and _SLEOUT on the interval of *DATABASE_GLSTAT."""
+def element_ids(lines, keyword):
+    """The ids of the elements of the first `keyword` block that are in the part of its first
+    element (the cup's first blank layer, not a rigid tool; comment lines skipped)."""
+    at = lines.index(keyword) + 1
+    ids, part = [], None
+    while at < len(lines) and not lines[at].startswith("*"):
+        line = lines[at]
+        if line.strip() and not line.startswith("$"):
+            fields = line.split(",") if "," in line else [line[:8], line[8:16]]
+            part = int(fields[1]) if part is None else part
+            if int(fields[1]) == part:
+                ids.append(int(fields[0]))
+        at += 1
+    if not ids:
+        sys.exit(f"make_restart_decks.py: no {keyword} elements")
+    return ids
+
+
+def with_part_outputs(path, names=("SPCFORC", "MATSUM", "SLEOUT"), history=None):
+    """Adds the *DATABASE_ outputs `names` on the interval of *DATABASE_GLSTAT and, with
+    `history` ("SHELL" or "SOLID"), elout.csv of the first and last element of the first
+    part of that kind."""
     with open(path) as f:
         lines = f.read().split("\n")
     at = lines.index("*DATABASE_GLSTAT")
     interval = lines[at + 1]
     extra = []
-    for name in ("SPCFORC", "MATSUM", "SLEOUT"):
+    for name in names:
         extra += [f"*DATABASE_{name}", interval]
+    if history is not None:
+        ids = element_ids(lines, f"*ELEMENT_{history}")
+        extra += ["*DATABASE_ELOUT", interval, f"*DATABASE_HISTORY_{history}",
+                  f"{ids[0]:10d}{ids[-1]:10d}"]
     lines[at + 2:at + 2] = extra
     with open(path, "w") as f:
         f.write("\n".join(lines))
@@ -61,12 +86,13 @@ def main(argv):
                     "--n", "10", "--depth", "2", "--name", "restart_shell"],
                    check=True, stdout=subprocess.DEVNULL)
     with_checkpoints(os.path.join(out, "restart_shell.k"), 1000)
-    with_part_outputs(os.path.join(out, "restart_shell.k"))
+    with_part_outputs(os.path.join(out, "restart_shell.k"), history="SHELL")
     with open(os.path.join(HERE, "decks", "block_threads.k")) as f:
         solid = f.read()
     with open(os.path.join(out, "restart_solid.k"), "w") as f:
         f.write(solid)
     with_checkpoints(os.path.join(out, "restart_solid.k"), 50)
+    with_part_outputs(os.path.join(out, "restart_solid.k"), names=(), history="SOLID")
     # Steel in mm, tonne, s: c = 5e8 mm^2/(s^2 K), k = 50 N/(s K).
     thermal = solid.replace(
         "         1         1         1         0         0\n",
