@@ -132,6 +132,10 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   const bool plastic_heat = out.plastic_work != nullptr;
   Geometry gk[kChunk];
   double vlk[kChunk][4][3], wlk[kChunk][4][3], tk[kChunk];
+  // Bulk viscosity of the membrane (TYPE -1/-2): its pressure and the compression rate.
+  const bool bulk_on =
+      block.bulk_viscosity_on && (block.bulk_viscosity.q1 != 0.0 || block.bulk_viscosity.q2 != 0.0);
+  double bulk_q[kChunk], bulk_rate[kChunk];
   const auto unip = static_cast<std::size_t>(nip);
   alignas(64) double LX[4][kChunk], LY[4][kChunk], LZ[4][kChunk];
   alignas(64) double LVX[4][kChunk], LVY[4][kChunk], LVZ[4][kChunk];
@@ -293,7 +297,22 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         return r;
       }
       st.area[e] = area;
-      const double dte = st.dt_factor[e] * LEN[k_el] / wave_speed;
+      double dte = st.dt_factor[e] * LEN[k_el] / wave_speed;
+      bulk_q[k_el] = 0.0;
+      if (bulk_on) {
+        // The solids' form on the mid-surface's in-plane compression, tr D = d11 + d22 < 0,
+        // with l = sqrt(A): q = rho l |tr D| (Q1 l |tr D| + Q2 c); the step L / (Q + sqrt(Q^2 +
+        // c^2)) with the viscous velocity Q = Q1 l |tr D| + Q2 c.
+        const double rate = -(RATE[0][k_el] + RATE[1][k_el]);
+        if (rate > 0.0) {
+          const double l = std::sqrt(area);
+          const double qv =
+              block.bulk_viscosity.q1 * l * rate + block.bulk_viscosity.q2 * wave_speed;
+          bulk_q[k_el] = rho * l * qv * rate;
+          bulk_rate[k_el] = rate;
+          dte = st.dt_factor[e] * LEN[k_el] / (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
+        }
+      }
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = e;
@@ -470,6 +489,13 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       }
       const double a = g.area;
       r.internal_energy += 0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * t * a;
+      if (bulk_q[k_el] > 0.0) {
+        // The pressure over the thickness acts on the membrane only (not stored in the
+        // stresses); its work q |tr D| t A dt is internal energy.
+        nxx -= bulk_q[k_el] * t;
+        nyy -= bulk_q[k_el] * t;
+        r.internal_energy += bulk_q[k_el] * bulk_rate[k_el] * t * a * dt;
+      }
       st.thickness[e] = t * (1.0 + tz);
       if (plastic_heat) {
         // Plastic dissipation sigma_eq d eps_p (the backward-Euler return: sigma : d eps^p),

@@ -251,6 +251,9 @@ struct Builder {
           }
           b.rule = core::ThicknessRule::lobatto;
         }
+        // *CONTROL_BULK_VISCOSITY TYPE -1 or -2 puts the bulk viscosity in the shells too.
+        b.bulk_viscosity_on = d.bulk_viscosity && d.bulk_viscosity->type < 0;
+        b.bulk_viscosity = bulk_viscosity_of(p);
         shell_block_of_part.emplace(p.id, m.shell_blocks.size());
         m.shell_blocks.push_back(std::move(b));
       }
@@ -514,9 +517,6 @@ struct Builder {
   }
 };
 
-}  // namespace
-
-BuildResult build(const model::ModelDesc& desc) {
 /// The *DATABASE_HISTORY_SHELL / _SOLID elements as block elements, once the blocks are coloured
 /// (colouring reorders a block's elements). An element named twice is written once; an element
 /// of a rigid part has no stresses to write (warned about). Without *DATABASE_ELOUT (or with
@@ -565,6 +565,9 @@ void element_histories(const model::ModelDesc& d, core::Model& m,
     m.output.elout_dt = d.elout->dt;
 }
 
+}  // namespace
+
+BuildResult build(const model::ModelDesc& desc) {
   Builder b{desc, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   b.m.title = desc.title;
   b.nodes();
@@ -579,10 +582,10 @@ void element_histories(const model::ModelDesc& d, core::Model& m,
             "*ELEMENT_SOLID", "",
             "a node is shared by more solid elements than the element colouring supports (128)");
   }
+  element_histories(desc, b.m, b.out.warnings);
   // Contacts last: they read the final (coloured) element blocks.
   build_contacts(desc, b.m, b.out.errors, b.out.warnings);
   build_temperatures(desc, b.m, b.out.errors);
-  element_histories(desc, b.m, b.out.warnings);
   build_thermal(desc, b.m, b.out.errors, b.out.warnings);
   build_thermal_expansion(desc, b.m, b.out.errors, b.out.warnings);
   if (b.out.errors.empty())

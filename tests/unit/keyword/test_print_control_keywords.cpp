@@ -55,7 +55,7 @@ TEST(ControlRigid, MetalFormingUpdateAcceptedSelectiveMassScalingRejected) {
                "selective mass scaling");
 }
 
-TEST(ControlBulkViscosity, ReadsTheCoefficientsAndRejectsTheShellTypesByName) {
+TEST(ControlBulkViscosity, ReadsTheCoefficientsAndTheShellTypes) {
   const ReadResult r = read_ok(
       "*CONTROL_BULK_VISCOSITY\n$#      q1        q2      type     btype    tstype\n"
       "       2.0      0.10         1         0         0\n");
@@ -66,8 +66,11 @@ TEST(ControlBulkViscosity, ReadsTheCoefficientsAndRejectsTheShellTypesByName) {
   const ReadResult blank = read_ok("*CONTROL_BULK_VISCOSITY\n\n");
   EXPECT_DOUBLE_EQ(blank.model.bulk_viscosity->q1, 1.5);
   EXPECT_DOUBLE_EQ(blank.model.bulk_viscosity->q2, 0.06);
-  expect_error("*CONTROL_BULK_VISCOSITY\n1.5,0.06,-1\n", 2, "*CONTROL_BULK_VISCOSITY", "TYPE",
-               "shells");
+  EXPECT_EQ(blank.model.bulk_viscosity->type, 1);
+  EXPECT_EQ(read_ok("*CONTROL_BULK_VISCOSITY\n1.5,0.06,-1\n").model.bulk_viscosity->type, -1);
+  EXPECT_EQ(read_ok("*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n").model.bulk_viscosity->type, -2);
+  expect_error("*CONTROL_BULK_VISCOSITY\n1.5,0.06,2\n", 2, "*CONTROL_BULK_VISCOSITY", "TYPE",
+               "Richards-Wilkins");
   expect_error("*CONTROL_BULK_VISCOSITY\n-1.0\n", 2, "*CONTROL_BULK_VISCOSITY", "Q1", "range");
 }
 

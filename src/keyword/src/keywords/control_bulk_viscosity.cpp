@@ -8,7 +8,7 @@
 namespace plyform::keyword {
 namespace {
 
-constexpr std::array kTypes{0, 1};
+constexpr std::array kTypes{-2, -1, 0, 1};
 
 constexpr std::array kFields{
     FieldSpec{.name = "Q1",
@@ -25,11 +25,12 @@ constexpr std::array kFields{
               .type = FieldType::kInteger,
               .default_value = 1,
               .unit = "-",
-              .description = "1 (or 0): standard bulk viscosity of the solids",
+              .description = "1 (or 0): standard bulk viscosity of the solids; -1 and -2: of "
+                             "the solids and the shells (the membrane's in-plane compression); "
+                             "plyform books its work in the internal energy for both (LS-DYNA "
+                             "does so for -2 only)",
               .allowed = kTypes,
-              .allowed_note = "plyform has the standard bulk viscosity of solids (TYPE 1); "
-                              "its shells (TYPE -1, -2) and the Richards-Wilkins form (2) are "
-                              "not implemented yet"},
+              .allowed_note = "the Richards-Wilkins form (2) is not implemented"},
     FieldSpec{.name = "BTYPE",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -50,12 +51,13 @@ void read_control_bulk_viscosity(KeywordInput& in) {
     in.fail(in.keyword().line, "", "missing card 1 (Q1 Q2 TYPE BTYPE TSTYPE)");
   const CardValues v = in.read(kCards[0], *line);
   store_once(in, in.model().bulk_viscosity,
-             model::ControlBulkViscosityDesc{.q1 = v.real("Q1"),
-                                             .q2 = v.real("Q2"),
-                                             .type = 1,
-                                             .btype = v.integer("BTYPE"),
-                                             .tstype = v.integer("TSTYPE"),
-                                             .where = in.where(line->line)});
+             model::ControlBulkViscosityDesc{
+                 .q1 = v.real("Q1"),
+                 .q2 = v.real("Q2"),
+                 .type = v.integer("TYPE") == 0 ? 1 : static_cast<int>(v.integer("TYPE")),
+                 .btype = v.integer("BTYPE"),
+                 .tstype = v.integer("TSTYPE"),
+                 .where = in.where(line->line)});
 }
 
 }  // namespace

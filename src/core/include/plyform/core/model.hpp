@@ -72,6 +72,10 @@ struct ShellBlock {
   int nip = 2;  ///< integration points through the thickness
   ThicknessRule rule = ThicknessRule::gauss;
   double shear_factor = 5.0 / 6.0;  ///< SHRF
+  /// Bulk viscosity of the membrane (*CONTROL_BULK_VISCOSITY TYPE -1/-2): in in-plane
+  /// compression the pressure q of the solids' form with l = sqrt(A), work to internal energy.
+  bool bulk_viscosity_on = false;
+  BulkViscosity bulk_viscosity;
   std::vector<GlobalId> element_id;
   std::vector<Index> connectivity;        ///< 4 node indices per element
   std::vector<double> thickness;          ///< initial thickness at the 4 nodes of each element
@@ -162,10 +166,6 @@ struct Controls {
   bool hourglass_energy = true;  ///< *CONTROL_ENERGY HGEN
 };
 
-struct OutputRequests {
-  double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
-  double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
-  double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
 /// An element of a block (elout.csv): the block's index in Model::solid_blocks or
 /// shell_blocks and the element's index in it (after colouring).
 struct BlockElement {
@@ -173,22 +173,26 @@ struct BlockElement {
   Index element = 0;
 };
 
+struct OutputRequests {
+  double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
+  double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
+  double nodout_dt = 0.0;            ///< *DATABASE_NODOUT (0: none); also cohesive.csv
   double rcforc_dt = 0.0;            ///< *DATABASE_RCFORC (0: none)
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
   double spcforc_dt = 0.0;           ///< *DATABASE_SPCFORC (0: none): spcforc.csv
   double sleout_dt = 0.0;            ///< *DATABASE_SLEOUT (0: none): sleout.csv
   double matsum_dt = 0.0;            ///< *DATABASE_MATSUM (0: none): matsum.csv
+  double elout_dt = 0.0;             ///< *DATABASE_ELOUT (0: none or no element): elout.csv
   long d3dump_cycles = 0;            ///< *DATABASE_BINARY_D3DUMP CYCL (0: none)
   std::vector<Index> history_nodes;  ///< *DATABASE_HISTORY_NODE
   double tprint_dt = 0.0;            ///< *DATABASE_TPRINT (0: none): tprint.csv, heat.csv
-};
-  double elout_dt = 0.0;             ///< *DATABASE_ELOUT (0: none or no element): elout.csv
-
-struct Model {
-  std::string title;
   /// *DATABASE_HISTORY_SHELL and _SOLID (elout.csv), in deck order.
   std::vector<BlockElement> history_shells;
   std::vector<BlockElement> history_solids;
+};
+
+struct Model {
+  std::string title;
   // Nodes (reference configuration).
   std::vector<GlobalId> node_id;
   std::vector<double> x0, y0, z0;

@@ -56,7 +56,7 @@ struct ControlAccuracyDesc {
 struct ControlBulkViscosityDesc {
   double q1 = 1.5;   ///< Q1: quadratic coefficient
   double q2 = 0.06;  ///< Q2: linear coefficient
-  int type = 1;      ///< TYPE: 1 solids; -1 solids and shells
+  int type = 1;      ///< TYPE: 1 solids; -1, -2 solids and shells
   int btype = 0;     ///< BTYPE: beams (none in plyform), as written
   int tstype = 0;    ///< TSTYPE: thick shells (none in plyform), as written
   SourceLocation where;
