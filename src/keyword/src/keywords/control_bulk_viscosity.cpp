@@ -72,7 +72,9 @@ KeywordSpec control_bulk_viscosity_keyword() {
               "q = rho l |tr D| (Q1 l |tr D| + Q2 c), l the cube root of the element's volume, "
               "c its wave speed; the stable step becomes L / (Q + sqrt(Q^2 + c^2)) with "
               "Q = Q1 l |tr D| + Q2 c. Without this keyword, Q1 1.5 and Q2 0.06 (LS-DYNA's "
-              "defaults); a part's *HOURGLASS Q1 and Q2 replace these for its elements."};
+              "defaults); a part's *HOURGLASS Q1 and Q2 replace these for its elements. TYPE -1 "
+              "and -2 also put it in the shells' membrane (l = sqrt(A), c the plate wave "
+              "speed; docs/materials.md)."};
 }
 
 }  // namespace plyform::keyword
