@@ -170,6 +170,27 @@ TEST(Contact, OtherContactOptionsAreUnsupportedKeywords) {
   EXPECT_NE(r.errors[0].message.find("unsupported option _TIEBREAK_ID"), std::string::npos);
 }
 
+// --- _MPP: the MPP cards after the ID card
+
+TEST(Contact, MppCardsAreReadAfterTheIdCard) {
+  const ReadResult r = read_ok(
+      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_ID_MPP\n"
+      "         4blank to die\n"
+      "$#  ignore      bckt    lcbckt    ns2trk   inititr    parmax    unused   chksegs\n"
+      "         1       200         0         3         2    1.0005                   0\n"
+      "&         0\n"
+      "         1         2         3         3\n"
+      "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_MPP\n0,200\n3,4,3,3\n");
+  ASSERT_EQ(r.model.contacts.size(), 2u);
+  EXPECT_EQ(r.model.contacts[0].id, 4);
+  EXPECT_EQ(r.model.contacts[0].ignore, 1);  // the MPP card's IGNORE
+  EXPECT_EQ(r.model.contacts[0].ssid, 1);    // the '&' card passed over
+  EXPECT_EQ(r.model.contacts[1].ssid, 3);
+  EXPECT_EQ(r.model.contacts[1].ignore, 0);
+  expect_error("*CONTACT_SURFACE_TO_SURFACE_MPP\n3\n1,2,3,3\n", 2,
+               "*CONTACT_SURFACE_TO_SURFACE_MPP", "IGNORE", "IGNORE takes 0, 1 or 2");
+}
+
 // --- _TIEBREAK of the automatic contacts
 
 TEST(ContactTiebreak, TheCardAfterCard3IsRead) {

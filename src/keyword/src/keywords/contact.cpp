@@ -15,13 +15,30 @@
 namespace plyform::keyword {
 namespace {
 
-constexpr std::array<std::string_view, 6> kContactOptions{"",        "ID",         "TITLE",
-                                                          "THERMAL", "THERMAL_ID", "THERMAL_TITLE"};
+// Each with its _MPP form: the MPP cards (LS-DYNA's distributed search) right after the ID card.
+constexpr std::array<std::string_view, 12> kContactOptions{
+    "",    "ID",     "TITLE",     "THERMAL",     "THERMAL_ID",     "THERMAL_TITLE",
+    "MPP", "ID_MPP", "TITLE_MPP", "THERMAL_MPP", "THERMAL_ID_MPP", "THERMAL_TITLE_MPP"};
 // The automatic contacts also come as LS-DYNA's built-in tiebreak (the alternative to the
 // cohesive law that the seed paper names).
-constexpr std::array<std::string_view, 9> kAutomaticOptions{
-    "",         "ID",          "TITLE",         "THERMAL", "THERMAL_ID", "THERMAL_TITLE",
-    "TIEBREAK", "TIEBREAK_ID", "TIEBREAK_TITLE"};
+constexpr std::array<std::string_view, 18> kAutomaticOptions{"",
+                                                             "ID",
+                                                             "TITLE",
+                                                             "THERMAL",
+                                                             "THERMAL_ID",
+                                                             "THERMAL_TITLE",
+                                                             "TIEBREAK",
+                                                             "TIEBREAK_ID",
+                                                             "TIEBREAK_TITLE",
+                                                             "MPP",
+                                                             "ID_MPP",
+                                                             "TITLE_MPP",
+                                                             "THERMAL_MPP",
+                                                             "THERMAL_ID_MPP",
+                                                             "THERMAL_TITLE_MPP",
+                                                             "TIEBREAK_MPP",
+                                                             "TIEBREAK_ID_MPP",
+                                                             "TIEBREAK_TITLE_MPP"};
 
 constexpr std::array kSlaveTypes{0, 2, 3, 4};
 constexpr std::array kMasterTypes{0, 2, 3};
@@ -362,6 +379,58 @@ constexpr std::array kThermalCard{
               .allowed_note = "ALGO takes 0 or 1"},
 };
 
+// MPP card 1 (_MPP): the parallel search of LS-DYNA's MPP version. plyform's search is its
+// own (bucket sort, docs/contact.md): these tune nothing here and are read; IGNORE is the
+// contact's (as on optional card C).
+constexpr std::array kZeroToTwoIgnore{0, 1, 2};
+constexpr std::array kMppFields{
+    FieldSpec{.name = "IGNORE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "initial penetrations, as IGNORE of optional card C (0-2)",
+              .allowed = kZeroToTwoIgnore,
+              .allowed_note = "IGNORE takes 0, 1 or 2"},
+    FieldSpec{.name = "BCKT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "MPP bucket sort interval (read; plyform re-searches when the "
+                             "surfaces have moved half a segment)"},
+    FieldSpec{.name = "LCBCKT",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "curve of the MPP bucket sort interval (read)"},
+    FieldSpec{.name = "NS2TRK",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "MPP segments tracked per node (read; plyform keeps every "
+                             "candidate of the search)"},
+    FieldSpec{.name = "INITITR",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "MPP initial penetration iterations (read)"},
+    FieldSpec{.name = "PARMAX",
+              .unit = "-",
+              .description = "MPP parametric extension of segments (read; MAXPAR of optional "
+                             "card A is plyform's)"},
+    FieldSpec{.name = "UNUSED", .type = FieldType::kText, .description = "not used"},
+    FieldSpec{.name = "CHKSEGS",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "MPP check of degenerate segments (read)"},
+    FieldSpec{
+        .name = "PENSF", .unit = "-", .description = "MPP penetration scale of IGNORE (read)"},
+    FieldSpec{.name = "GRPABLE",
+              .type = FieldType::kInteger,
+              .unit = "-",
+              .description = "MPP grouping of contacts (read)"},
+};
+constexpr CardSpec kMppCard{
+    .title = "MPP card 1",
+    .fields = kMppFields,
+    .presence =
+        "with _MPP only: right after the ID card; a second MPP card (beginning with "
+        "'&') is passed over"};
+
 constexpr std::array kCards{
     CardSpec{.title = "ID card", .fields = kIdFields, .presence = "with _ID or _TITLE only"},
     CardSpec{.title = "Card 1", .fields = kCard1, .presence = "required"},
@@ -386,6 +455,7 @@ constexpr std::array kCards{
              .fields = kThermalCard,
              .presence = "with _THERMAL only: required, right after card 3 (cards 2 and 3 "
                          "must then be given)"},
+    kMppCard,
 };
 constexpr std::size_t kThermalCardIndex = 8;
 
@@ -437,11 +507,11 @@ constexpr std::array kSingleSurfaceCards{
     kCards[2], kCards[3],
     kCards[4], kCards[5],
     kCards[6], kCards[7],
-    kCards[8],
+    kCards[8], kMppCard,
 };
 constexpr std::array kAutomaticCards{
-    kCards[0], kCards[1], kCards[2], kCards[3], kCards[4],
-    kCards[5], kCards[6], kCards[7], kCards[8], kTiebreakCardSpec,
+    kCards[0], kCards[1], kCards[2], kCards[3],         kCards[4], kCards[5],
+    kCards[6], kCards[7], kCards[8], kTiebreakCardSpec, kMppCard,
 };
 
 /// The tiebreak card: what each OPTION needs, and PARAM only where it means something.
@@ -507,10 +577,20 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   const std::string_view option = in.option();
   c.thermal = option.starts_with("THERMAL");
   const bool tiebreak = option.starts_with("TIEBREAK");
-  if (option.ends_with("ID") || option.ends_with("TITLE")) {
+  const std::string_view base =
+      option.ends_with("MPP")
+          ? option.substr(0, option.size() - std::min<std::size_t>(option.size(), 4))
+          : option;
+  if (base.ends_with("ID") || base.ends_with("TITLE")) {
     const CardValues id = in.next_card(kCards[0], "ID card (CID HEADING)");
     c.id = id.integer("CID");
     c.heading = id.text("HEADING");
+  }
+  if (option.ends_with("MPP")) {
+    const CardValues mpp = in.next_card(kMppCard, "MPP card 1 (IGNORE BCKT LCBCKT ...)");
+    c.ignore = static_cast<int>(mpp.integer("IGNORE"));
+    if (const auto rest = in.remaining(); !rest.empty() && rest.front().text.starts_with("&"))
+      (void)in.next_line();  // MPP card 2: the MPP search's own switches
   }
   const auto line1 = in.next_line();
   if (!line1) {
@@ -605,7 +685,8 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
     if (const auto line = in.next_line()) {
       const CardValues v = read_default_card(in, kCards[k], *line);
       if (k == 6)
-        c.ignore = static_cast<int>(v.integer("IGNORE"));
+        if (v.integer("IGNORE") != 0)
+          c.ignore = static_cast<int>(v.integer("IGNORE"));
     }
   }
   if (has_more_cards(in)) {
