@@ -120,6 +120,7 @@ struct PassRuntime {
   std::vector<double> slave_face_normal;     // 3 per slave face, current
   std::vector<signed char> slave_face_sign;  // per slave_face_index entry
   std::vector<double> rs, prev_rs;           // 3 per slave: its surface point minus the node
+  bool slave_face_normals_absent = false;    // a node set's slave side: no faces, no normals
   std::vector<double> friction_heated;       // per slave: friction dissipation turned to heat
   // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
   std::vector<std::int8_t> tie_state;
@@ -231,6 +232,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->slave_normal.assign(3 * ns, 0.0);
       pr->slave_face_normal.assign(3 * (cp.slave_faces.size() / 4), 0.0);
       pr->slave_face_sign.assign(cp.slave_face_index.size(), 1);
+      pr->slave_face_normals_absent = cp.slave_face_start.empty() || cp.slave_face_index.empty();
       for (double o : cp.segment_offset)
         pr->master_offsets = pr->master_offsets || o > 0.0;
       if (cp.offsets_follow_thickness) {
@@ -459,6 +461,12 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
   const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
   const double offsets = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
   Located L;
+  if (!cp.segment_one_sided.empty() && cp.segment_one_sided[static_cast<std::size_t>(s)]) {
+    // A solid's face: the node is outside, on the outward normal's side, whatever its motion.
+    L.side = 1;
+    project_surface(pr, k, s, packed, guess, nullptr, L);
+    return L;
+  }
   L.side = pr.side[k];
   if (L.side != 0 && was_located) {
     // The side is relative to a segment's normal, and a surface's segments need not be
@@ -497,8 +505,36 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
   return L;
 }
 
+// How squarely a segment faces slave k's own surface: the node's outward normal (its faces'
+// mean) against the segment's normal turned to the node's side; -1 face to face, 0 at a right
+// angle. A shell node's normal has no outward sense (both faces touch): the alignment counts
+// either way. Without faces (a node set), 0.
+inline double facing(const PassRuntime& pr, std::size_t k, const Located& L) {
+  const double* own = &pr.slave_normal[3 * k];
+  const double f =
+      L.side * (own[0] * L.sp.normal[0] + own[1] * L.sp.normal[1] + own[2] * L.sp.normal[2]);
+  return pr.slave_offset[k] > 0.0 ? -std::fabs(f) : f;
+}
+
+// A node more than half its element's depth behind a solid's face is on the body's far side,
+// not through the face: no candidate (a thin block's far face is within the search's reach).
+inline bool behind(const PassRuntime& pr, core::Index s, const Located& L) {
+  const core::ContactPass& cp = *pr.pass;
+  const auto su = static_cast<std::size_t>(s);
+  return !cp.segment_one_sided.empty() && cp.segment_one_sided[su] &&
+         L.sp.distance < -0.5 * cp.segment_depth[su];
+}
+
+// A segment the node's surface faces (within about 78 degrees of face to face).
+constexpr double kFaces = -0.2;
+
 // The segment of slave k: its current one while the projection stays within MAXPAR - 1 of it
-// (parametric measure), else the nearest candidate within that tolerance. Returns -1 when none.
+// (parametric measure) and the node's surface faces it, else the nearest candidate within that
+// tolerance, the candidates the node's surface faces first. A node on an edge of the master (a
+// slice's bottom corner on the edge between the top and the side faces of the slice below) is
+// as near to the side face whose plane it lies in as to the top face it presses into, nearer
+// once it has pressed in; it must take the top face, which its own surface faces (as LS-DYNA
+// does), or it falls through. Returns -1 when no candidate is within reach.
 core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_located,
                    const double* packed, Located& best) {
   const core::Index cur = pr.seg[k];
@@ -507,24 +543,34 @@ core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_loc
     // prev_shape holds last cycle's projection on `cur` (apply() swaps the arrays).
     const Located L = project_on(pr, k, cur, free, was_located, packed, &pr.prev_shape[4 * k]);
     if (!L.sp.degenerate && L.sp.outside <= tol &&
-        std::fabs(L.sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)]) {
+        std::fabs(L.sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)] &&
+        !behind(pr, cur, L) && (facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent)) {
       best = L;
       return cur;
     }
   }
-  double best_score = kInf;
+  double best_score = kInf, best_facing = kInf;
+  bool best_faces = false;
   core::Index found = -1;
+  const double tie = 1e-6 * pr.margin;
   for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
     const core::Index s = pr.cand[c];
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     if (L.sp.degenerate || L.sp.outside > tol ||
-        std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)])
+        std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)] || behind(pr, s, L))
       continue;
     // About the true distance to the segment: the normal distance and, outside the segment,
     // the parametric overshoot times half the segment size.
     const double score = std::hypot(L.sp.distance, L.sp.outside * pr.margin);
-    if (score < best_score) {
+    const double f = facing(pr, k, L);
+    const bool faces = f <= kFaces;
+    const bool better = faces != best_faces        ? faces
+                        : score < best_score - tie ? true
+                                                   : score <= best_score + tie && f < best_facing;
+    if (found < 0 || better) {
       best_score = score;
+      best_facing = f;
+      best_faces = faces;
       best = L;
       found = s;
     }

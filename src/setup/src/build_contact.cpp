@@ -49,6 +49,7 @@ struct Surface {
   std::vector<double> thickness;  // per segment: shell thickness (0 for solid faces)
   std::vector<char> rigid;        // per segment: on a rigid part
   std::vector<Index> shell;       // per segment: its shell (numbered across blocks), -1 none
+  std::vector<double> depth;      // per segment: a solid face's element depth V / A (0 shell)
   [[nodiscard]] std::size_t size() const { return area.size(); }
 };
 
@@ -144,6 +145,7 @@ struct ContactBuilder {
       s.thickness.push_back(t);
       s.rigid.push_back(rigid ? 1 : 0);
       s.shell.push_back(shell);
+      s.depth.push_back(0.0);
     };
     Index shell_base = 0;  // shells numbered across the blocks, in block order
     for (const core::ShellBlock& b : m.shell_blocks) {
@@ -188,6 +190,7 @@ struct ContactBuilder {
             continue;
           const double a = geo.area(q.data());
           add(q.data(), v > 0.0 ? kb * a * a / v : 0.0, 0.0, rigid_material(b.material), -1);
+          s.depth.back() = a > 0.0 ? v / a : 0.0;
         }
       }
     }
@@ -278,6 +281,7 @@ struct ContactBuilder {
         s.thickness.push_back(model_surface.thickness[f]);
         s.rigid.push_back(model_surface.rigid[f]);
         s.shell.push_back(model_surface.shell[f]);
+        s.depth.push_back(model_surface.depth[f]);
       }
       return s;
     }
@@ -375,6 +379,8 @@ struct ContactBuilder {
       p.segment_stiffness.push_back(factor * s.stiffness[k]);
       const bool follows = offset && mst <= 0.0 && s.shell[k] >= 0;
       p.segment_shell.push_back(follows ? s.shell[k] : -1);
+      p.segment_one_sided.push_back(s.shell[k] < 0 ? 1 : 0);  // a solid's exterior face
+      p.segment_depth.push_back(s.depth[k]);
       p.segment_offset_factor.push_back(follows ? 0.5 * sfmt : 0.0);
     }
   }

@@ -39,7 +39,13 @@ struct ContactPass {
   std::vector<double> slave_stiffness;  ///< SOFT = 0 node stiffness [force/length]
   // Master segments: 4 node indices each, a triangle repeats its third node.
   std::vector<Index> segments;
-  std::vector<double> segment_offset;     ///< contact half-thickness [length]
+  std::vector<double> segment_offset;  ///< contact half-thickness [length]
+  /// Per segment: 1 for an exterior face of solids (one-sided: a node is always on its outward
+  /// side, penetration is inside the body), 0 for a shell (touched from either side).
+  std::vector<char> segment_one_sided;
+  /// Per one-sided segment: the depth of its element behind it (V / A); a node more than half
+  /// of it behind the face has not come through it (it is on the body's far side).
+  std::vector<double> segment_depth;
   std::vector<double> segment_stiffness;  ///< SOFT = 0 segment stiffness [force/length]
   // Offsets that follow the current shell thickness (THKCHG = 1; cohesive interfaces always):
   // offset = factor * thickness, the thickness of a slave node the mean over its shells.
