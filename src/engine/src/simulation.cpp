@@ -237,6 +237,8 @@ struct Simulation::State {
   const Energies& energies();
   void check_books(const Energies& e);
   void write_outputs(bool last);
+  double written_at = -1.0;  // the time of the outputs `written` lists (bits of write_outputs)
+  unsigned written = 0;
   core::StateArchive::Records checkpoint_records();
   void write_checkpoint();
   [[nodiscard]] Snapshot snapshot() const;
@@ -914,15 +916,25 @@ void Simulation::State::check_books(const Energies& e) {
 void Simulation::State::write_outputs(bool last) {
   const core::OutputRequests& out = model.output;
   state_written = false;
-  const bool want_state = t + eps_t >= next_state || last;
-  const bool want_glstat = out.glstat_dt > 0.0 && (t + eps_t >= next_glstat || last);
+  // `last` writes every output once more at the end, except those already written at this
+  // time (the end fell on their interval): no file gets its final row twice.
+  if (t != written_at) {
+    written_at = t;
+    written = 0;
+  }
+  const auto due = [&](double next, unsigned bit) {
+    return t + eps_t >= next || (last && !(written & bit));
+  };
+  const bool want_state = due(next_state, 1u << 0);
+  const bool want_glstat = out.glstat_dt > 0.0 && due(next_glstat, 1u << 1);
   const bool want_nodout =
-      out.nodout_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_nodout || last);
+      out.nodout_dt > 0.0 && !out.history_nodes.empty() && due(next_nodout, 1u << 2);
   // elout.csv turns the shells' stresses to global axes in their current frames.
-  const bool want_elout = out.elout_dt > 0.0 && (t + eps_t >= next_elout || last);
+  const bool want_elout = out.elout_dt > 0.0 && due(next_elout, 1u << 3);
   if (want_state || want_nodout || want_elout)
     sync();
   if (want_state) {
+    written |= 1u << 0;
     sink.state(snapshot());
     state_written = true;
     if (out.d3plot_dt > 0.0) {
@@ -933,6 +945,7 @@ void Simulation::State::write_outputs(bool last) {
     }
   }
   if (want_glstat) {
+    written |= 1u << 1;
     sink.glstat(energies());
     check_books(en);
     if (has_rigid)
@@ -941,11 +954,13 @@ void Simulation::State::write_outputs(bool last) {
       next_glstat += out.glstat_dt;
   }
   if (want_nodout) {
+    written |= 1u << 2;
     sink.nodout(snapshot());
     while (next_nodout <= t + eps_t)
       next_nodout += out.nodout_dt;
   }
-  if (out.bndout_dt > 0.0 && (t + eps_t >= next_bndout || last)) {
+  if (out.bndout_dt > 0.0 && due(next_bndout, 1u << 4)) {
+    written |= 1u << 4;
     sink.boundary_forces(snapshot());
     while (next_bndout <= t + eps_t)
       next_bndout += out.bndout_dt;
@@ -953,7 +968,7 @@ void Simulation::State::write_outputs(bool last) {
   if (heat) {
     // The heat books on the tprint clock, else on glstat's (and at the end).
     const double heat_dt = out.tprint_dt > 0.0 ? out.tprint_dt : out.glstat_dt;
-    if (t + eps_t >= next_heat || last) {
+    if (t + eps_t >= next_heat || (last && heat_written_at != t)) {
       sink.heat(t, heat->ledger());
       heat_written_at = t;
       if (heat_dt > 0.0) {
@@ -963,33 +978,39 @@ void Simulation::State::write_outputs(bool last) {
         next_heat = end_time;
       }
     }
-    if (out.tprint_dt > 0.0 && !out.history_nodes.empty() && (t + eps_t >= next_tprint || last)) {
+    if (out.tprint_dt > 0.0 && !out.history_nodes.empty() && due(next_tprint, 1u << 5)) {
+      written |= 1u << 5;
       sink.temperatures(snapshot());
       while (next_tprint <= t + eps_t)
         next_tprint += out.tprint_dt;
     }
   }
-  if (contact && out.rcforc_dt > 0.0 && (t + eps_t >= next_rcforc || last)) {
+  if (contact && out.rcforc_dt > 0.0 && due(next_rcforc, 1u << 6)) {
+    written |= 1u << 6;
     sink.contact_forces(t, contact->report());
     while (next_rcforc <= t + eps_t)
       next_rcforc += out.rcforc_dt;
   }
-  if (out.spcforc_dt > 0.0 && (t + eps_t >= next_spcforc || last)) {
+  if (out.spcforc_dt > 0.0 && due(next_spcforc, 1u << 7)) {
+    written |= 1u << 7;
     sink.constraint_forces(snapshot());
     while (next_spcforc <= t + eps_t)
       next_spcforc += out.spcforc_dt;
   }
-  if (contact && out.sleout_dt > 0.0 && (t + eps_t >= next_sleout || last)) {
+  if (contact && out.sleout_dt > 0.0 && due(next_sleout, 1u << 8)) {
+    written |= 1u << 8;
     sink.interface_energies(t, contact->report());
     while (next_sleout <= t + eps_t)
       next_sleout += out.sleout_dt;
   }
-  if (out.matsum_dt > 0.0 && (t + eps_t >= next_matsum || last)) {
+  if (out.matsum_dt > 0.0 && due(next_matsum, 1u << 9)) {
+    written |= 1u << 9;
     sink.part_energies(t, part_energies());
     while (next_matsum <= t + eps_t)
       next_matsum += out.matsum_dt;
   }
   if (want_elout) {
+    written |= 1u << 3;
     sink.element_histories(snapshot());
     while (next_elout <= t + eps_t)
       next_elout += out.elout_dt;

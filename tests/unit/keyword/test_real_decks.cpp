@@ -50,7 +50,7 @@ const model::CurveDesc* find_curve(const ReadResult& result, int id) {
 }
 
 /// Decks of MANIFEST.tsv that read with no error (the solver-core keyword subset).
-constexpr int kAcceptedRealDecks = 2;
+constexpr int kAcceptedRealDecks = 7;
 
 class RealDecks : public ::testing::Test {
  protected:
