@@ -184,7 +184,10 @@ TEST(Contact, MppCardsAreReadAfterTheIdCard) {
   ASSERT_EQ(r.model.contacts.size(), 2u);
   EXPECT_EQ(r.model.contacts[0].id, 4);
   EXPECT_EQ(r.model.contacts[0].ignore, 1);  // the MPP card's IGNORE
-  EXPECT_EQ(r.model.contacts[0].ssid, 1);    // the '&' card passed over
+  EXPECT_EQ(r.model.contacts[0].ssid, 1);    // the '&' card passed over, with a warning
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].where.line, 5);
+  EXPECT_NE(r.warnings[0].message.find("MPP card 2 passed over"), std::string::npos);
   EXPECT_EQ(r.model.contacts[1].ssid, 3);
   EXPECT_EQ(r.model.contacts[1].ignore, 0);
   expect_error("*CONTACT_SURFACE_TO_SURFACE_MPP\n3\n1,2,3,3\n", 2,

@@ -589,8 +589,12 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   if (option.ends_with("MPP")) {
     const CardValues mpp = in.next_card(kMppCard, "MPP card 1 (IGNORE BCKT LCBCKT ...)");
     c.ignore = static_cast<int>(mpp.integer("IGNORE"));
-    if (const auto rest = in.remaining(); !rest.empty() && rest.front().text.starts_with("&"))
-      (void)in.next_line();  // MPP card 2: the MPP search's own switches
+    if (const auto rest = in.remaining(); !rest.empty() && rest.front().text.starts_with("&")) {
+      const auto line2 = in.next_line();  // MPP card 2: the MPP search's own switches
+      in.warn(line2->line, "",
+              "MPP card 2 passed over: its fields tune LS-DYNA's distributed search, which "
+              "plyform's own search has no use for");
+    }
   }
   const auto line1 = in.next_line();
   if (!line1) {
