@@ -7,6 +7,7 @@
 
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/material/woven_ply.hpp"
+#include "state_strain.hpp"
 
 namespace plyform::app {
 
@@ -49,6 +50,14 @@ void current_shell_frame(const core::ShellBlock& blk, const engine::NodalState& 
     e1[0] = e2[1] = e3[2] = 1.0;
     e1[1] = e1[2] = e2[0] = e2[2] = e3[0] = e3[1] = 0.0;
   }
+}
+
+/// The number of shell cells (the last cells of every state).
+std::size_t shell_cells(const core::Model& model) {
+  std::size_t n = 0;
+  for (const core::ShellBlock& b : model.shell_blocks)
+    n += b.size();
+  return n;
 }
 
 }  // namespace
@@ -198,6 +207,8 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
   stress_bottom_.resize(6 * cells);
   plastic_strain_.assign(cells, 0.0);
   thickness_.assign(cells, std::numeric_limits<double>::quiet_NaN());  // solids: none
+  if (model.output.state_fields.strain)
+    strain_.resize(6 * cells);
   for (const core::ShellBlock& b : model.shell_blocks) {
     const auto* ply = std::get_if<core::ReinforcedThermoplastic>(
         &model.materials[static_cast<std::size_t>(b.material)]);
@@ -324,11 +335,35 @@ void ResultWriter::state(const engine::Snapshot& s) {
     piece.point_data.push_back({"gap", 1, gap_});
     piece.point_data.push_back({"contact_state", 1, contact_state_});
   }
-  piece.cell_data = {{"stress", 6, stress_},
-                     {"stress_top", 6, stress_top_},
-                     {"stress_bottom", 6, stress_bottom_},
-                     {"plastic_strain", 1, plastic_strain_},
-                     {"thickness", 1, thickness_}};
+  // *DATABASE_EXTENT_BINARY: an array left out for shells but kept for solids (flag 3) is NaN
+  // in the shell cells.
+  const core::OutputRequests::StateFields& fields = model_.output.state_fields;
+  const std::size_t solid_cells = cell - shell_cells(model_);
+  const auto drop_shells = [&](std::vector<double>& a, std::size_t width) {
+    std::fill(a.begin() + static_cast<std::ptrdiff_t>(width * solid_cells), a.end(),
+              std::numeric_limits<double>::quiet_NaN());
+  };
+  const bool stress = fields.solid_stress || fields.shell_stress;
+  if (stress && !fields.shell_stress) {
+    for (auto* a : {&stress_, &stress_top_, &stress_bottom_})
+      drop_shells(*a, 6);
+  }
+  if (fields.solid_plastic_strain && !fields.shell_plastic_strain)
+    drop_shells(plastic_strain_, 1);
+  piece.cell_data.clear();
+  if (stress) {
+    piece.cell_data.push_back({"stress", 6, stress_});
+    piece.cell_data.push_back({"stress_top", 6, stress_top_});
+    piece.cell_data.push_back({"stress_bottom", 6, stress_bottom_});
+  }
+  if (fields.solid_plastic_strain || fields.shell_plastic_strain)
+    piece.cell_data.push_back({"plastic_strain", 1, plastic_strain_});
+  if (fields.thickness)
+    piece.cell_data.push_back({"thickness", 1, thickness_});
+  if (fields.strain) {
+    element_log_strains(model_, ns, *s.shells, strain_);
+    piece.cell_data.push_back({"strain", 6, strain_});
+  }
   static constexpr const char* kFibre[3] = {"fibre_1", "fibre_2", "fibre_3"};
   for (int i = 0; i < fibre_families_; ++i)
     piece.cell_data.push_back({kFibre[i], 3, fibre_[i]});

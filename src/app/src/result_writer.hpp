@@ -73,7 +73,7 @@ class ResultWriter : public engine::OutputSink {
   std::vector<std::uint8_t> cell_types_;
   // Per-state buffers, reused.
   std::vector<double> displacement_, velocity_, temperature_, stress_, stress_top_, stress_bottom_,
-      plastic_strain_, thickness_, beta_, contact_pressure_, gap_, contact_state_;
+      plastic_strain_, thickness_, strain_, beta_, contact_pressure_, gap_, contact_state_;
   // Woven plies (*MAT_REINFORCED_THERMOPLASTIC): each family's fibre direction (global, unit)
   // and the shear angle between families 1 and 2 (degrees); NaN in other cells.
   int fibre_families_ = 0;  // the most families of any ply block (0: no ply, no arrays)

@@ -111,6 +111,7 @@ KeywordSpec database_matsum_keyword();
 KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
 KeywordSpec database_elout_keyword();
+KeywordSpec database_extent_binary_keyword();
 KeywordSpec database_history_shell_keyword();
 KeywordSpec database_history_solid_keyword();
 
@@ -220,6 +221,7 @@ std::span<const KeywordSpec> keyword_registry() {
       database_tprint_keyword(),
       database_history_node_keyword(),
       database_elout_keyword(),
+      database_extent_binary_keyword(),
       database_history_shell_keyword(),
       database_history_solid_keyword(),
   };

@@ -490,6 +490,17 @@ struct Builder {
     }
     if (d.d3dump)
       m.output.d3dump_cycles = d.d3dump->cycles;
+    if (d.extent_binary) {
+      // LS-DYNA's flags: 1 (or blank) writes, 2 writes neither, 3 writes the solids' only.
+      const model::DatabaseExtentBinaryDesc& x = *d.extent_binary;
+      core::OutputRequests::StateFields& f = m.output.state_fields;
+      f.shell_stress = x.sigflg <= 1;
+      f.solid_stress = x.sigflg != 2;
+      f.shell_plastic_strain = x.epsflg <= 1;
+      f.solid_plastic_strain = x.epsflg != 2;
+      f.thickness = x.engflg != 2;
+      f.strain = x.strflg % 10 == 1;
+    }
     for (const model::DatabaseAsciiDesc& a : d.ascii_outputs) {
       if (a.name == "GLSTAT")
         m.output.glstat_dt = a.dt;

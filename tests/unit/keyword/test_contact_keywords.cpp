@@ -413,19 +413,54 @@ TEST(DatabaseOutputs, SpcforcSleoutMatsumReadTheirIntervals) {
 TEST(DatabaseOutputs, OutputRequestsPlyformDoesNotWriteAreWarnedAboutNotRejected) {
   // Unknown output keywords (one with an option), with cards of their own.
   const ReadResult r = read_ok(
-      "*DATABASE_SECFORC\n1e-4\n*DATABASE_EXTENT_BINARY\n0,0,3,1\n0,0,0,0,0\n"
+      "*DATABASE_SECFORC\n1e-4\n*DATABASE_ABSTAT\n1e-4,1\n0,0,0,0,0\n"
       "*DATABASE_HISTORY_SHELL_SET\n7\n*DATABASE_GLSTAT\n1e-3\n");
   ASSERT_EQ(r.warnings.size(), 3u);
   EXPECT_EQ(r.warnings[0].keyword, "*DATABASE_SECFORC");
   EXPECT_EQ(r.warnings[0].where.line, 1);
   EXPECT_NE(r.warnings[0].message.find("not written"), std::string::npos);
-  EXPECT_EQ(r.warnings[1].keyword, "*DATABASE_EXTENT_BINARY");
+  EXPECT_EQ(r.warnings[1].keyword, "*DATABASE_ABSTAT");
   EXPECT_EQ(r.warnings[2].keyword, "*DATABASE_HISTORY_SHELL_SET");
   ASSERT_EQ(r.model.ascii_outputs.size(), 1u);  // the cards passed over are not read as others
   EXPECT_EQ(r.model.ascii_outputs[0].name, "GLSTAT");
   // Any other keyword plyform does not know stays an error.
   expect_error("*CONTROL_IMPLICIT_GENERAL\n1\n", 1, "*CONTROL_IMPLICIT_GENERAL", "",
                "unsupported keyword");
+}
+
+TEST(DatabaseExtentBinary, ReadsTheFlagsAndNamesWhatIsNotWritten) {
+  // LS-PrePost's four cards, with requests plyform honours (STRFLG 1, SIGFLG 3, EPSFLG 2),
+  // passes (IEVERP, DCOMP) and does not write (NEIPS, SHGE, STSSZ, NINTSLD, INTOUT).
+  const ReadResult r = read_ok(
+      "*DATABASE_EXTENT_BINARY\n"
+      "$#   neiph     neips    maxint    strflg    sigflg    epsflg    rltflg    engflg\n"
+      "         0         7         3         1         3         2         1         1\n"
+      "         0         1         0         1         2         2         1         1\n"
+      "         8         0       1.0         0         0         0ALL\n"
+      "         0         0         0         0         0\n");
+  ASSERT_TRUE(r.model.extent_binary.has_value());
+  const model::DatabaseExtentBinaryDesc& x = *r.model.extent_binary;
+  EXPECT_EQ(x.strflg, 1);
+  EXPECT_EQ(x.sigflg, 3);
+  EXPECT_EQ(x.epsflg, 2);
+  EXPECT_EQ(x.ieverp, 1);
+  EXPECT_EQ(x.nintsld, 8);
+  EXPECT_EQ(x.intout, "ALL");
+  std::vector<std::string> fields;
+  for (const Diagnostic& w : r.warnings) {
+    EXPECT_EQ(w.keyword, "*DATABASE_EXTENT_BINARY");
+    fields.push_back(w.field);
+  }
+  EXPECT_EQ(fields, (std::vector<std::string>{"NEIPS", "SHGE", "STSSZ", "NINTSLD", "INTOUT"}));
+  EXPECT_EQ(r.warnings[0].where.line, 3);
+  // Blank cards are LS-DYNA's defaults: nothing to warn about.
+  EXPECT_TRUE(read_ok("*DATABASE_EXTENT_BINARY\n\n                   1\n").warnings.empty());
+  expect_error("*DATABASE_EXTENT_BINARY\n0,0,3,12\n", 2, "*DATABASE_EXTENT_BINARY", "STRFLG",
+               "digits abc");
+  expect_error("*DATABASE_EXTENT_BINARY\n0,0,3,0,4\n", 2, "*DATABASE_EXTENT_BINARY", "SIGFLG",
+               "");
+  expect_error("*DATABASE_EXTENT_BINARY\n\n\n\n\n1\n", 6, "*DATABASE_EXTENT_BINARY", "",
+               "cards 5 and after");
 }
 
 TEST(DatabaseHistoryNodeSet, ReadsTheNodeSetIds) {

@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "scratch_dir.hpp"
+#include "vtu_arrays.hpp"
 
 namespace plyform::output {
 namespace {
 
+using test::appended_arrays;
 using testing::read_text;
 using testing::ScratchDir;
 
@@ -73,33 +75,6 @@ struct Mesh {
     return p;
   }
 };
-
-/// Raw bytes of each appended array of a .vtu written by VtuSeries, by array name.
-std::map<std::string, std::string> appended_arrays(const std::string& vtu) {
-  const std::size_t marker = vtu.find("<AppendedData encoding=\"raw\">");
-  EXPECT_NE(marker, std::string::npos);
-  const std::size_t base = vtu.find('_', marker) + 1;
-  std::map<std::string, std::string> arrays;
-  std::size_t pos = 0;
-  while ((pos = vtu.find("<DataArray ", pos)) < marker) {
-    const std::size_t end = vtu.find("/>", pos);
-    const std::string element = vtu.substr(pos, end - pos);
-    const auto attribute = [&](const std::string& name) {
-      const std::size_t a = element.find(" " + name + "=\"");
-      if (a == std::string::npos) {
-        return std::string();
-      }
-      const std::size_t from = a + name.size() + 3;
-      return element.substr(from, element.find('"', from) - from);
-    };
-    const std::size_t offset = std::stoull(attribute("offset"));
-    std::uint64_t bytes = 0;
-    std::memcpy(&bytes, vtu.data() + base + offset, sizeof bytes);
-    arrays[attribute("Name")] = vtu.substr(base + offset + sizeof bytes, bytes);
-    pos = end;
-  }
-  return arrays;
-}
 
 template <class T>
 std::string bytes_of(const std::vector<T>& values) {

@@ -189,6 +189,13 @@ struct OutputRequests {
   /// *DATABASE_HISTORY_SHELL and _SOLID (elout.csv), in deck order.
   std::vector<BlockElement> history_shells;
   std::vector<BlockElement> history_solids;
+  /// *DATABASE_EXTENT_BINARY: the arrays each state (results_NNNN.vtu) holds.
+  struct StateFields {
+    bool shell_stress = true, solid_stress = true;                  ///< SIGFLG
+    bool shell_plastic_strain = true, solid_plastic_strain = true;  ///< EPSFLG
+    bool thickness = true;                                          ///< ENGFLG
+    bool strain = false;                                            ///< STRFLG c = 1
+  } state_fields;
 };
 
 struct Model {

@@ -49,6 +49,20 @@ struct DatabaseEloutDesc {
   SourceLocation where;
 };
 
+/// *DATABASE_EXTENT_BINARY: which fields the states (results_NNNN.vtu) hold. The values as
+/// written (0 where blank); LS-DYNA's meaning of each is in docs/keywords.md. plyform honours
+/// SIGFLG, EPSFLG, ENGFLG (thickness) and STRFLG's strain digit; requests for data it does not
+/// write are warned about when read.
+struct DatabaseExtentBinaryDesc {
+  int neiph = 0, neips = 0, maxint = 0, strflg = 0, sigflg = 0, epsflg = 0, rltflg = 0, engflg = 0;
+  int cmpflg = 0, ieverp = 0, beamip = 0, dcomp = 0, shge = 0, stssz = 0, n3thdt = 0, ialemat = 0;
+  int nintsld = 0, pkp_sen = 0, hydro = 0, msscl = 0, therm = 0;
+  double sclp = 0.0;
+  std::string intout, nodout;
+  int dtdt = 0, resplt = 0;
+  SourceLocation where;
+};
+
 /// *DATABASE_HISTORY_SHELL / *DATABASE_HISTORY_SOLID (_ID): elements written to elout.csv.
 struct DatabaseHistoryElementDesc {
   bool shell = true;                      ///< _SHELL (else _SOLID)

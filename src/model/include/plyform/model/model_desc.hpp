@@ -110,6 +110,7 @@ struct ModelDesc {
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
   std::vector<DatabaseHistoryNodeDesc> history_nodes;
   std::optional<DatabaseEloutDesc> elout;
+  std::optional<DatabaseExtentBinaryDesc> extent_binary;
   std::vector<DatabaseHistoryElementDesc> history_elements;  ///< _SHELL and _SOLID, deck order
 
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened
