@@ -53,6 +53,48 @@ int main(int argc, char** argv) {
   auto* id_opt = law_cmd->add_option("--interface", interface_id,
                                      "NOSID of the law to drive when the deck has several");
 
+  plyform::app::FitOptions fit;
+  std::filesystem::path fit_output, fit_deck;
+  double fit_temperature = 0.0, fit_penalty = 0.0;
+  int fit_interface = 0;
+  bool fit_no_plot = false;
+  CLI::App* fit_cmd = app.add_subcommand(
+      "fit", "Fit the law's constants to measured traction-opening curves (least squares)");
+  fit_cmd
+      ->add_option("PROBE", fit.curves,
+                   "CSV curves with a header: time, gap (or opening), and stress (tension "
+                   "positive), pressure (compression positive) or force (with --area)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  auto* fit_out = fit_cmd->add_option(
+      "-o,--output", fit_output,
+      "fitted deck (default: <first curve stem>_fit.k); also writes <stem>_curves.csv, .png");
+  auto* fit_deck_opt = fit_cmd->add_option(
+      "--deck", fit_deck, "deck whose *USER_INTERFACE_FRICTION gives the starting constants");
+  auto* fit_id_opt = fit_cmd->add_option("--interface", fit_interface,
+                                         "NOSID of that card when the deck has several");
+  fit_cmd->add_option("--free", fit.free, "constants to fit, by the law's names")
+      ->capture_default_str();
+  fit_cmd
+      ->add_option("--rate", fit.rates,
+                   "opening rate, one for all curves or one per curve (files without a time "
+                   "or a gap column)")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  fit_cmd->add_option("--area", fit.areas, "probe area for force columns, one or one per curve")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
+  auto* fit_t_opt = fit_cmd->add_option(
+      "--temperature", fit_temperature,
+      "temperature of curves without a temperature column (default: T_LO of the start)");
+  auto* fit_pen_opt =
+      fit_cmd->add_option("--penalty", fit_penalty, "normal penalty per area (default: C_N)")
+          ->check(CLI::PositiveNumber);
+  fit_cmd->add_option("--substeps", fit.substeps, "law updates per data interval")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  fit_cmd->add_flag("--no-plot", fit_no_plot, "do not draw <stem>_curves.png");
+
   CLI11_PARSE(app, argc, argv);
 
   if (run_cmd->parsed()) {
@@ -74,6 +116,20 @@ int main(int argc, char** argv) {
     if (*id_opt)
       law.interface_id = interface_id;
     return plyform::app::run_law(law, std::cout, std::cerr);
+  }
+  if (fit_cmd->parsed()) {
+    if (*fit_out)
+      fit.output = fit_output;
+    if (*fit_deck_opt)
+      fit.deck = fit_deck;
+    if (*fit_id_opt)
+      fit.interface_id = fit_interface;
+    if (*fit_t_opt)
+      fit.temperature = fit_temperature;
+    if (*fit_pen_opt)
+      fit.penalty = fit_penalty;
+    fit.plot = !fit_no_plot;
+    return plyform::app::run_fit(fit, std::cout, std::cerr);
   }
   return 2;
 }

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace plyform::app {
 
@@ -18,6 +20,28 @@ struct LawOptions {
 
 /// `plyform law DECK.k --path PATH.csv [-o OUT.csv] [--penalty K] [--interface ID]`
 int run_law(const LawOptions& options, std::ostream& out, std::ostream& err);
+
+struct FitOptions {
+  std::vector<std::filesystem::path> curves;    ///< PROBE.csv files, one measured curve each
+  std::optional<std::filesystem::path> output;  ///< FIT.k; none: <first curve stem>_fit.k
+  std::optional<std::filesystem::path> deck;    ///< starting constants; none: from the curves
+  std::optional<int> interface_id;              ///< NOSID; needed when the deck has several
+  std::string free = "CN,SMAX,ETA";             ///< the constants fitted, by the law's names
+  std::vector<double> rates;          ///< opening rate: none, one for all curves, or one per curve
+  std::vector<double> areas;          ///< probe area for force columns: none, one, or one per curve
+  std::optional<double> temperature;  ///< of curves without a temperature column; none: T_LO
+  std::optional<double> penalty;      ///< normal penalty per area; none: C_N (as `plyform law`)
+  int substeps = 1;                   ///< law updates per data interval
+  bool plot = true;                   ///< FIT_curves.png with scripts/plot_fit.py
+};
+
+/// `plyform fit PROBE.csv... [-o FIT.k] [--deck base.k] [--free CN,SMAX,ETA] [--rate V...]
+/// [--area A...]`: 0 fitted (FIT.k, FIT_curves.csv and FIT_curves.png written), 1 input errors
+/// or curves the law cannot represent, 2 output errors, 3 a fit that is not meaningful (a
+/// constant at its bound or not identifiable, a curve not represented): FIT_curves.csv and the
+/// plot are written for the diagnosis, FIT.k is not. A missing Python or matplotlib only skips
+/// the plot, with a note.
+int run_fit(const FitOptions& options, std::ostream& out, std::ostream& err);
 
 struct RunOptions {
   std::filesystem::path deck;
