@@ -480,8 +480,13 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
     }
     project_surface(pr, k, s, packed, guess, &pr.frame[9 * k], L);
     // A free node whose mid-surface is beyond the master's on the other side (its gap on this
-    // side below minus twice the offsets) changes side.
-    if (!(free && L.side * L.sp.distance < -2.0 * offsets))
+    // side below minus twice the offsets) changes side. Between surfaces of no thickness (a
+    // solid's face against a tool mesh, which is not offset) twice the offsets is 0: every
+    // approaching node that pressed in at all turned to the other side before the law could
+    // push it back, and a rigid cylinder went through a rubber block untouched. There a node
+    // changes side only once it is deeper than half the search margin.
+    const double through = offsets > 0.0 ? 2.0 * offsets : 0.5 * pr.margin;
+    if (!(free && L.side * L.sp.distance < -through))
       return L;
     L.side = static_cast<signed char>(-L.side);
     project_surface(pr, k, s, packed, guess, nullptr, L);

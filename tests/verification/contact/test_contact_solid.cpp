@@ -112,5 +112,84 @@ TEST(ContactSolid, SliceOnASliceTakesTheTopFaceAtTheEdgesAndSlides) {
               -*std::min_element(r.uz.back().second.begin(), r.uz.back().second.end()));
 }
 
+// A rigid plate (a tool mesh: *MAT_RIGID shells, not offset in a non-automatic contact) pressed
+// onto a block of hexahedra: neither surface has a thickness. Before, every approaching node
+// that pressed in at all turned to the plate's other side before the law could push it back,
+// and the tool passed through the block untouched (a rigid cylinder went through the rubber
+// block of examples/deformable). References: the block's top follows the plate (it moves down
+// by the plate's travel beyond the first touch, less the penalty's penetration F / (k A)),
+// and the contact force is the block's uniaxial stress E A (-uz) / H from its own top face.
+TEST(ContactSolid, RigidToolMeshOnASolidFacePressesIt) {
+  const double end = 3e-3, gap = 0.01, travel = 0.03, h = 2.0, e = 2.0e5;
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(end);
+  d.kw("*DATABASE_GLSTAT").card(end / 300);
+  d.kw("*DATABASE_RCFORC").card(end / 300);
+  d.kw("*DATABASE_NODOUT").card(end / 300);
+  d.kw("*PART").kw("block").card(1, 1, 1);
+  d.kw("*PART").kw("tool").card(2, 2, 2);
+  d.kw("*SECTION_SOLID").card(1, 1);
+  d.kw("*SECTION_SHELL").card(2, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
+  d.kw("*MAT_ELASTIC").card(1, 7.85e-9, e, 0.0);  // nu = 0: uniaxial stress, no lateral push
+  d.kw("*MAT_RIGID").card(2, 7.85e-9, 2.1e5, 0.3).card(1.0, 4, 7);
+  const auto top = d.block(1, 1, 1, 0, 4, 0, 4, 0, h, 2, 2, 2);
+  d.plate(2, 1001, 1001, -1, 5, -1, 5, 2, 2, h + gap);
+  std::vector<int> bottom;
+  for (int i = 1; i <= 9; ++i)
+    bottom.push_back(i);
+  d.kw("*SET_NODE_LIST").card(1).ids(bottom);
+  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 0, 0, 1);  // rollers
+  d.kw("*BOUNDARY_SPC_NODE").card(1, 0, 1, 1, 1);
+  d.kw("*DATABASE_HISTORY_NODE").ids(top);
+  d.kw("*DEFINE_CURVE")
+      .card(1)
+      .card(0.0, 0.0)
+      .card(end / 2, -(gap + travel))
+      .card(end, -(gap + travel));
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_RIGID").card(2, 3, 2, 1, 1.0);
+  // The slave side: the top faces (outward, +z), so that every slave node's penalty per area
+  // is the top elements' (with the whole part, the edges' nodes would share the side faces').
+  d.kw("*SET_SEGMENT").card(2);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int a = top[static_cast<std::size_t>(3 * j + i)];
+      d.card(a, a + 1, a + 4, a + 3);
+    }
+  d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(5, "tool on block");
+  d.card(2, 2, 0, 3).card(0, 0, 0, 0, 20).card(1, 1);
+  test::DeckRun r;
+  run_deck(d.text(), r);
+  double fz = 0.0, uz = 0.0;
+  int n = 0;
+  for (const auto& [t, reports] : r.sink.contact) {
+    if (t >= 2.0 * end / 3.0) {
+      fz += reports.at(0).force[2];
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 10);
+  fz /= n;
+  n = 0;
+  for (const auto& [t, u] : r.uz) {
+    if (t >= 2.0 * end / 3.0) {
+      for (double v : u)
+        uz += v;
+      n += static_cast<int>(u.size());
+    }
+  }
+  uz /= n;
+  // The block is pressed: force down on its top, the top moved down.
+  EXPECT_LT(fz, 0.0);
+  EXPECT_LT(uz, -0.02 * travel);
+  EXPECT_NEAR(-fz, e * 16.0 * (-uz) / h, 0.02 * -fz);
+  // The top is behind the plate by the penetration only: F / (k A) with the block's penalty
+  // per area 0.1 K A_face / V of its top elements (K = E / 3 at nu = 0); that penalty is 15
+  // times softer than the 2 mm block, so the top moves about travel / 16.
+  const double k_area = 0.1 * (e / 3.0) * 4.0 / 4.0;
+  EXPECT_NEAR(-uz, travel - (-fz) / (k_area * 16.0), 0.05 * -uz);
+  std::printf("rigid tool mesh on a solid face: force %.4g N, E A u / H %.4g N, top %.4g mm\n", -fz,
+              e * 16.0 * (-uz) / h, uz);
+}
+
 }  // namespace
 }  // namespace plyform
