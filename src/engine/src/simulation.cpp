@@ -659,6 +659,7 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
   const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
   w_full = dt_prev / (2.0 * dt_avg);
+  double first_body_work = 0.0;         // the bodies' reactions over [0, dt/2] (first call only)
   for (core::Index ri : rigid_nodes) {  // the velocity pass zeroes the forces
     const auto i = static_cast<std::size_t>(ri);
     rfx[i] = s.fx[i];
@@ -713,6 +714,7 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
   }
   bc.constrain({.t = t_now, .dt_prev = dt_prev, .dt = dt_next, .dt_avg = dt_avg}, old, s);
   double prev_ext = 0.0, next_ext = 0.0;  // constrained nodes, in order
+  double next_reaction = 0.0;             // their reactions' part of next_ext
   for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
     const auto i = static_cast<std::size_t>(constrained_nodes[k]);
     const unsigned char* c = &constrained[3 * i];
@@ -724,6 +726,7 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
     for (int d = 0; d < 3; ++d) {
       r[d] = c[d] ? s.mass[i] * (vc[d] - vo[d]) / dt_avg - (e[d] - f[d]) : 0.0;
       prev_ext += vo[d] * r[d];
+      next_reaction += vc[d] * r[d];
       next_ext += vc[d] * r[d] + (vc[d] - free_v[k][static_cast<std::size_t>(d)]) * e[d];
     }
     s.rx[i] = r[0];
@@ -762,11 +765,34 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
     // Work of the bodies' prescribed motions and constraints (their reactions).
     for (std::size_t k = 0; k < rigid_bodies->size(); ++k) {  // no allocation in the cycle
       const rigid::RigidBodies::BodyReport b = rigid_bodies->report(k);
+      if (dt_prev == 0.0) {
+        // Over [0, dt/2] the body goes from its velocity at 0 (the report's, at t_n) to the
+        // new one: the reaction works on their mean (a motion prescribed from t = 0 books
+        // 1/2 m V^2, not m V^2 nor nothing).
+        for (std::size_t d = 0; d < 3; ++d) {
+          first_body_work += dt_avg * 0.5 *
+                             (b.reaction[d] * (b.velocity[d] + b.velocity_half[d]) +
+                              b.reaction_moment[d] * (b.omega[d] + b.omega_half[d]));
+        }
+        continue;
+      }
       prev_ext += (b.reaction[0] * b.velocity[0] + b.reaction[1] * b.velocity[1] +
                    b.reaction[2] * b.velocity[2] + b.reaction_moment[0] * b.omega[0] +
                    b.reaction_moment[1] * b.omega[1] + b.reaction_moment[2] * b.omega[2]) *
-                  2.0 * dt_avg / std::max(dt_prev, 1e-300) * (dt_prev > 0.0 ? 1.0 : 0.0);
+                  2.0 * dt_avg / dt_prev;
     }
+  }
+  if (dt_prev == 0.0) {
+    // The first half step, [0, dt/2]. A constraint that sets a velocity at t = 0 (a motion
+    // prescribed from rest, an SPC on a node that has an initial velocity) acts as an impulse:
+    // it takes the node from v_0 to v_1/2 at once, and its work is the impulse times the mean
+    // of the two, 1/2 m (v_1/2^2 - v_0^2). On v_1/2 alone (the trapezoid of the later steps)
+    // a motion from rest would book m V^2 and an SPC nothing. The loads keep the trapezoid,
+    // which is exact for a constant force.
+    const double reactions = 0.5 * (prev_ext + next_reaction);
+    pending_external =
+        0.5 * dt_next * (sums[1] + next_ext - next_reaction + reactions) + first_body_work;
+    return 0.0;
   }
   pending_external = 0.5 * dt_next * (sums[1] + next_ext);
   return 0.5 * dt_prev * (sums[0] + prev_ext);

@@ -452,6 +452,8 @@ RigidBodies::BodyReport RigidBodies::report(std::size_t k) const {
     r.velocity[d] = b.v_old[d] + (b.v[d] - b.v_old[d]) * s;
     r.omega[d] = b.w_old[d] + (b.w[d] - b.w_old[d]) * s;
     r.angular_momentum[d] = b.l_old[d] + (b.l[d] - b.l_old[d]) * s;
+    r.velocity_half[d] = b.v[d];
+    r.omega_half[d] = b.w[d];
   }
   return r;
 }

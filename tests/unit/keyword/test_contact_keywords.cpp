@@ -457,8 +457,7 @@ TEST(DatabaseExtentBinary, ReadsTheFlagsAndNamesWhatIsNotWritten) {
   EXPECT_TRUE(read_ok("*DATABASE_EXTENT_BINARY\n\n                   1\n").warnings.empty());
   expect_error("*DATABASE_EXTENT_BINARY\n0,0,3,12\n", 2, "*DATABASE_EXTENT_BINARY", "STRFLG",
                "digits abc");
-  expect_error("*DATABASE_EXTENT_BINARY\n0,0,3,0,4\n", 2, "*DATABASE_EXTENT_BINARY", "SIGFLG",
-               "");
+  expect_error("*DATABASE_EXTENT_BINARY\n0,0,3,0,4\n", 2, "*DATABASE_EXTENT_BINARY", "SIGFLG", "");
   expect_error("*DATABASE_EXTENT_BINARY\n\n\n\n\n1\n", 6, "*DATABASE_EXTENT_BINARY", "",
                "cards 5 and after");
 }

@@ -102,6 +102,9 @@ class RigidBodies {
     std::array<double, 3> omega{};     ///< angular velocity, global axes [1/time]
     std::array<double, 3>
         angular_momentum{};  ///< about the centre, global axes [mass length^2/time]
+    /// The velocities of the half step the last advance computed (t_{n+1/2}); `velocity` and
+    /// `omega` are those of t_n.
+    std::array<double, 3> velocity_half{}, omega_half{};
   };
 
   /// Finds the parts with RigidMaterial, their nodes (of their solid and shell elements) and
