@@ -80,11 +80,17 @@ inline int node_id(int p, int nx, int i, int j) {
   return 1000 * p + j * (nx + 1) + i + 1;
 }
 
+/// Elements along the strip of layer p: nx, the core's `core_extra` more (of the same length).
+inline int columns(int p, int nx, int core_extra) {
+  return p == 2 ? nx + core_extra : nx;
+}
+
 /// The three layers of a strip of `length` in nx x 1 shells: parts, sections, materials,
 /// nodes and elements, the plane-strip SPCs (every node: y, rotations about x and z) and the
 /// clamp of every layer at x = 0; the two interfaces (contacts 1: lower skin, 2: upper skin,
-/// each the slave against the core).
-inline void write_strip(Deck& d, double length, int nx, Interface interface) {
+/// each the slave against the core). The core may run `core_extra` elements beyond the skins'
+/// ends (node ids: node_id(2, nx + core_extra, ...)).
+inline void write_strip(Deck& d, double length, int nx, Interface interface, int core_extra = 0) {
   // PENOPT 3: the slave's (a skin's) penalty; the core's is 1/47 of it (as square_cup sets).
   d.kw("*CONTROL_CONTACT").card(0.1, 0.0, 0, 0, 3);
   d.kw("*HOURGLASS").card(1, 4, 0.1);
@@ -94,21 +100,23 @@ inline void write_strip(Deck& d, double length, int nx, Interface interface) {
     d.kw("*SECTION_SHELL").card(p, 2, kShearFactor, 3);
     d.card(l.thickness, l.thickness, l.thickness, l.thickness);
     d.kw("*MAT_ELASTIC").card(p, l.density, l.modulus, 0.0);
+    const int n = columns(p, nx, core_extra);
     d.kw("*NODE");
     for (int j = 0; j <= 1; ++j)
-      for (int i = 0; i <= nx; ++i)
-        d.card(node_id(p, nx, i, j), length * i / nx, kWidth * j, l.z);
+      for (int i = 0; i <= n; ++i)
+        d.card(node_id(p, n, i, j), length * i / nx, kWidth * j, l.z);
     d.kw("*ELEMENT_SHELL");
-    for (int i = 0; i < nx; ++i)
-      d.card(1000 * p + i + 1, p, node_id(p, nx, i, 0), node_id(p, nx, i + 1, 0),
-             node_id(p, nx, i + 1, 1), node_id(p, nx, i, 1));
+    for (int i = 0; i < n; ++i)
+      d.card(1000 * p + i + 1, p, node_id(p, n, i, 0), node_id(p, n, i + 1, 0),
+             node_id(p, n, i + 1, 1), node_id(p, n, i, 1));
   }
   std::vector<int> all, root;
   for (int p = 1; p <= 3; ++p)
     for (int j = 0; j <= 1; ++j) {
-      root.push_back(node_id(p, nx, 0, j));
-      for (int i = 1; i <= nx; ++i)
-        all.push_back(node_id(p, nx, i, j));
+      const int n = columns(p, nx, core_extra);
+      root.push_back(node_id(p, n, 0, j));
+      for (int i = 1; i <= n; ++i)
+        all.push_back(node_id(p, n, i, j));
     }
   d.kw("*SET_NODE_LIST").card(1).ids(root);
   d.kw("*SET_NODE_LIST").card(2).ids(all);
