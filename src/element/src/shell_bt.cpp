@@ -259,15 +259,35 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         thx += 0.25 * wxl;
         thy += 0.25 * wyl;
       }
-      // The in-plane gradient is taken on the configuration at t_{n+1}; mapped to the mid-step
-      // configuration, L_m = L (I - dt/2 L)^-1, a rigid rotation gives an exactly skew L_m
-      // (Hughes-Winget): no spurious membrane strain however far the shell turns.
+      // The mid-surface's velocity gradient in the frame, taken on the configuration at
+      // t_{n+1}, is mapped to the mid-step configuration, L_m = L (I - dt/2 L)^-1, as a whole
+      // 3 x 3 (Hughes-Winget): its third column is the turning of the normal (the nodes' mean
+      // spin: dv_x/dz = theta_y, dv_y/dz = -theta_x), its third row the out-of-plane slopes.
+      // A rigid rotation about any axis then gives an exactly skew L_m: no spurious membrane
+      // strain however far and fast the shell turns. (The in-plane 2 x 2 block alone is exact
+      // for turning in the plane only: a shell tumbling about an in-plane axis saw a stretch
+      // rate of omega^2 dt / 2 and gained energy.)
       const double h2 = 0.5 * dt;
-      const double m00 = 1.0 - h2 * dxx, m01 = -h2 * lxy, m10 = -h2 * lyx, m11 = 1.0 - h2 * dyy;
-      const double idet = 1.0 / (m00 * m11 - m01 * m10);
-      const double i00 = m11 * idet, i01 = -m01 * idet, i10 = -m10 * idet, i11 = m00 * idet;
-      const double a00 = dxx * i00 + lxy * i10, a01 = dxx * i01 + lxy * i11;
-      const double a10 = lyx * i00 + dyy * i10, a11 = lyx * i01 + dyy * i11;
+      const double l3[3][3] = {{dxx, lxy, -gxz}, {lyx, dyy, -gyz}, {gxz, gyz, 0.0}};
+      double m3[3][3];
+      for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col)
+          m3[row][col] = (row == col ? 1.0 : 0.0) - h2 * l3[row][col];
+      // Inverse by cofactors (m3 is within dt |L| of the identity: never singular).
+      const double c00 = m3[1][1] * m3[2][2] - m3[1][2] * m3[2][1];
+      const double c01 = m3[1][2] * m3[2][0] - m3[1][0] * m3[2][2];
+      const double c02 = m3[1][0] * m3[2][1] - m3[1][1] * m3[2][0];
+      const double idet = 1.0 / (m3[0][0] * c00 + m3[0][1] * c01 + m3[0][2] * c02);
+      const double inv[3][2] = {{c00 * idet, (m3[0][2] * m3[2][1] - m3[0][1] * m3[2][2]) * idet},
+                                {c01 * idet, (m3[0][0] * m3[2][2] - m3[0][2] * m3[2][0]) * idet},
+                                {c02 * idet, (m3[0][1] * m3[2][0] - m3[0][0] * m3[2][1]) * idet}};
+      // The in-plane block of L_m (its first two columns suffice).
+      double am[2][2];
+      for (int row = 0; row < 2; ++row)
+        for (int col = 0; col < 2; ++col)
+          am[row][col] =
+              l3[row][0] * inv[0][col] + l3[row][1] * inv[1][col] + l3[row][2] * inv[2][col];
+      const double a00 = am[0][0], a01 = am[0][1], a10 = am[1][0], a11 = am[1][1];
       // The stored stresses turn with the frame (they are its components); the material's spin
       // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
       // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
@@ -488,7 +508,14 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         tz += 0.5 * weight[k] * dzz[k];
       }
       const double a = g.area;
-      r.internal_energy += 0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * t * a;
+      // The step's stress work counts on the mid-step volume: the thickness halfway through
+      // its update, the area back half the step's in-plane dilatation from t_{n+1} (on the
+      // end-of-step volume the books drift at first order in the step when the sheet
+      // stretches and thins).
+      const double mid_volume =
+          t * (1.0 + 0.5 * tz) * a * (1.0 - 0.5 * dt * (RATE[0][k_el] + RATE[1][k_el]));
+      r.internal_energy +=
+          0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * mid_volume;
       if (bulk_q[k_el] > 0.0) {
         // The pressure over the thickness acts on the membrane only (not stored in the
         // stresses); its work q |tr D| t A dt is internal energy.
