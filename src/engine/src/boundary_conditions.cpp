@@ -100,6 +100,19 @@ void BoundaryConditions::constrain(const StepTimes& step, const double* const ol
       continue;
     const core::LoadCurve& c = model_.curves[static_cast<std::size_t>(m.curve)];
     const auto n = static_cast<std::size_t>(m.node);
+    if (step.hold) {
+      // The end of the run: the velocity at the end time is the last step's, not one read
+      // from the curve beyond the end (a displacement that stops there would stop its node in
+      // a step that is never taken, and its kinetic energy would vanish from the final books).
+      if (m.direction < 3) {
+        const auto d = static_cast<std::size_t>(m.direction);
+        v[d][n] = old[d][n];
+      } else {
+        for (int k : across(m.direction - 3))
+          v[static_cast<std::size_t>(k)][n] = old[static_cast<std::size_t>(k)][n];
+      }
+      continue;
+    }
     if (m.direction < 3) {
       const auto d = static_cast<std::size_t>(m.direction);
       switch (m.kind) {

@@ -24,6 +24,9 @@ class BoundaryConditions {
     double dt_prev = 0.0;
     double dt = 0.0;
     double dt_avg = 0.0;
+    /// The pass at the end time: prescribed motions keep the velocity of the step just taken
+    /// instead of reading their curves beyond the end (see Simulation's step_vote).
+    bool hold = false;
   };
 
   /// Imposes constraints on the velocities of the step [t, t + dt] (displacement u at t);

@@ -341,14 +341,19 @@ void RigidBodies::advance_body(Body& b, const StepTimes& step, const NodalArrays
     double value = 0.0;
     switch (mo.kind) {
       case core::MotionKind::velocity:
-        value = mo.scale * curve_mean(c, t, t + dt);
+        value = step.hold ? (rot ? b.w[d] : b.v[d]) : mo.scale * curve_mean(c, t, t + dt);
         break;
       case core::MotionKind::acceleration:
         value = (rot ? b.w[d] : b.v[d]) + mo.scale * c(t) * dt_avg;
         break;
       case core::MotionKind::displacement:
-        value = rot ? (mo.scale * c(t + dt) - b.angle[d]) / dt
-                    : (b.props.centre[d] + mo.scale * c(t + dt) - b.xc[d]) / dt;
+        // At the end of the run the body keeps the last step's velocity rather than one read
+        // from the curve beyond the end.
+        if (step.hold)
+          value = rot ? b.w[d] : b.v[d];
+        else
+          value = rot ? (mo.scale * c(t + dt) - b.angle[d]) / dt
+                      : (b.props.centre[d] + mo.scale * c(t + dt) - b.xc[d]) / dt;
         break;
     }
     if (rot) {

@@ -60,6 +60,9 @@ struct StepTimes {
   double dt_prev = 0.0;  ///< t_{n+1} - t_n (0 at the first call, t = 0)
   double dt_next = 0.0;  ///< t_{n+2} - t_{n+1}: the step the new velocities are for (> 0)
   double dt_avg = 0.0;   ///< (dt_prev + dt_next) / 2
+  /// The pass at the end time: prescribed motions keep the bodies' last velocities instead of
+  /// reading their curves beyond the end.
+  bool hold = false;
 };
 
 /// The engine's nodal arrays (structure of arrays, length node_count), as pointers.
