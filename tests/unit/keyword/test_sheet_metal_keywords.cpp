@@ -129,7 +129,10 @@ TEST(MatTransverselyAnisotropic, Mat037AliasAndDefaults) {
 TEST(MatTransverselyAnisotropic, Rejections) {
   constexpr std::string_view kKw = "*MAT_037";
   expect_error("*MAT_037\n1,7.9e-9,207000,0.3,201.3,0,-1.593,1\n", 2, kKw, "R",
-               "R = -1.593: a negative R (R as a function of effective plastic strain");
+               "R = -1.593: a Lankford ratio is positive, and LS-DYNA gives a negative R a "
+               "meaning of its own that plyform does not implement");
+  expect_error("*MAT_037\n1,7.9e-9,207000,0.3,201.3,0,-4,1\n", 2, kKw, "R",
+               "(R against plastic strain from curve -R)");
   expect_error("*MAT_037\n1,7.9e-9,207000,0.3,201.3,0,0\n", 2, kKw, "R", "R must be > 0");
   expect_error("*MAT_037\n1,7.9e-9,207000,0.3,201.3,0\n", 2, kKw, "R", "a value is required");
   expect_error("*MAT_037\n1,7.9e-9,207000,0.3,0,0,1.5\n", 2, kKw, "SIGY", "SIGY must be > 0");

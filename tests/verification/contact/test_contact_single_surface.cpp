@@ -119,8 +119,9 @@ TEST(ContactSingleSurface, AFoldedStripPressedOntoItselfRestsOnItself) {
   ASSERT_FALSE(c.empty());
   // Before the legs meet (the free end above half the gap) the contact does nothing.
   for (std::size_t k = 0; k < r.uz.size() && k < c.size(); ++k) {
-    if (r.uz[k].second.at(0) > -0.5)
+    if (r.uz[k].second.at(0) > -0.5) {
       EXPECT_EQ(c[k].second.at(0).work, 0.0) << "t = " << c[k].first;
+    }
   }
   // On the lower leg: the gap closed (the tip's mid-surface a thickness above the lower leg's,
   // less the penalty's penetration under the load on its small contact area), and not through
@@ -203,8 +204,9 @@ TEST(ContactInitialPenetration, Ignore0MovesTheNodesOutBeforeTheRun) {
   const core::Model& m = *built.model;
   // The upper plate's nodes (ids 1001..) now lie 1 mm above the lower plate: moved 0.05 mm.
   for (std::size_t i = 0; i < m.node_count(); ++i) {
-    if (m.node_id[i] >= 1001)
+    if (m.node_id[i] >= 1001) {
       EXPECT_NEAR(m.z0[i], 1.0, 1e-12) << m.node_id[i];
+    }
   }
   bool warned = false;
   for (const auto& w : built.warnings)

@@ -4,6 +4,7 @@
 // viscoplastic rate formulation, R or E from curves, strain averaging) is an error naming the
 // field. Curves named are resolved when the model is built.
 #include <array>
+#include <cmath>
 #include <string>
 
 #include "../keyword_registry.hpp"
@@ -155,8 +156,8 @@ constexpr std::array kTaCard1Fields{
               .type = FieldType::kReal,
               .unit = "-",
               .description = "normal anisotropy: the width-to-thickness plastic strain ratio "
-                             "in uniaxial tension, > 0 (a negative R, a curve of R against "
-                             "plastic strain, is not supported)",
+                             "in uniaxial tension, > 0 (LS-DYNA's meanings of a negative R are "
+                             "not supported)",
               .required = true},
     FieldSpec{.name = "HLCID",
               .type = FieldType::kInteger,
@@ -227,10 +228,13 @@ void read_mat_transversely_anisotropic(KeywordInput& in) {
   require_positive(in, line->line, "RO", mat.density);
   require_positive(in, line->line, "E", mat.young);
   if (mat.r < 0.0) {
-    in.fail(line->line, "R",
-            fmt::format("R = {}: a negative R (R as a function of effective plastic strain, "
-                        "from the curve -R) is not supported; give the constant R > 0",
-                        mat.r));
+    in.fail(
+        line->line, "R",
+        fmt::format("R = {}: a Lankford ratio is positive, and LS-DYNA gives a negative R a "
+                    "meaning of its own{} that plyform does not implement; give the constant "
+                    "R > 0 (|R| if the deck means the ratio)",
+                    mat.r,
+                    mat.r == std::round(mat.r) ? " (R against plastic strain from curve -R)" : ""));
   }
   require_positive(in, line->line, "R", mat.r);
   if (mat.hlcid == 0) {
