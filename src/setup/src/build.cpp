@@ -193,7 +193,9 @@ struct Builder {
         m.solid_blocks.push_back(std::move(b));
       } else {
         const model::SectionShellDesc& sec = *shell->second;
-        if (sec.elform != 2) {
+        // A rigid part's shells only carry its mass and surface: their formulation does not
+        // enter the run (a tool meshed with the fully integrated shell is read as it is).
+        if (sec.elform != 2 && !rigid) {
           error(sec.where, "*SECTION_SHELL", "ELFORM",
                 "ELFORM " + std::to_string(sec.elform) +
                     " is not supported yet: plyform has the Belytschko-Tsay shell, ELFORM 2");
