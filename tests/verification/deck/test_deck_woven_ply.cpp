@@ -121,6 +121,10 @@ TEST(DeckWovenPly, ViscousHourglassControlIsWarnedAbout) {
   const std::string full_hg =
       warnings_of(frame_deck(260.0, "1,1,249,0,7\n*HOURGLASS\n7,4,0.03\n", 16));
   EXPECT_NE(full_hg.find("ignored for the fully integrated shell"), std::string::npos) << full_hg;
+  // Nor has it the shells' bulk viscosity yet: said so, not silently dropped.
+  const std::string full_bv =
+      warnings_of(frame_deck(260.0, "1,1,249\n*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n", 16));
+  EXPECT_NE(full_bv.find("not in the fully integrated shell"), std::string::npos) << full_bv;
 }
 
 }  // namespace
