@@ -102,6 +102,58 @@ TEST(ShellFullPatch, MembraneStressIsExactAtEveryPointAndInteriorForcesCancel) {
   EXPECT_NEAR(k.fz[centre], 0.0, 1e-9 * scale);
 }
 
+// A triangle (N3 = N4, the degenerate quadrilateral) takes a linear membrane field exactly at
+// its four points too, and a rigid rotation rate of it gives no stress.
+TEST(ShellFullPatch, DegenerateTriangleIsExactInMembraneAndRigidInRotation) {
+  core::Model m = full_plate(1.0, 1.0, 1, 1, 0.1);
+  m.x0 = {0.0, 1.3, 0.2, 0.0};  // the triangle 1-2-3 (node 4 unused)
+  m.y0 = {0.0, 0.1, 0.9, 0.0};
+  auto& conn = m.shell_blocks[0].connectivity;
+  conn = {0, 1, 2, 2};
+  const std::size_t n = m.node_count();
+  const double dt = 1e-6;
+  const std::array<std::vector<double>, 3> w{
+      std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  for (const double spin : {0.0, 1.0}) {
+    // Stretch, or a rigid spin about z: v = L x.
+    const double l[2][2] = {{spin == 0.0 ? 1.0 : 0.0, spin == 0.0 ? 0.3 : -1.0},
+                            {spin == 0.0 ? 0.2 : 1.0, spin == 0.0 ? -0.5 : 0.0}};
+    std::vector<double> packed(6 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      packed[6 * i] = m.x0[i];
+      packed[6 * i + 1] = m.y0[i];
+      packed[6 * i + 3] = l[0][0] * m.x0[i] + l[0][1] * m.y0[i];
+      packed[6 * i + 4] = l[1][0] * m.x0[i] + l[1][1] * m.y0[i];
+      if (spin != 0.0) {
+        // A rigid step: x_{n+1} = R(dt) X, v = (x_{n+1} - X) / dt (the mid-step mapping turns
+        // it into an exactly skew rate; v = W x_{n+1} alone would stretch at order dt^2).
+        const double c = std::cos(dt), sn = std::sin(dt);
+        packed[6 * i] = c * m.x0[i] - sn * m.y0[i];
+        packed[6 * i + 1] = sn * m.x0[i] + c * m.y0[i];
+        packed[6 * i + 3] = (packed[6 * i] - m.x0[i]) / dt;
+        packed[6 * i + 4] = (packed[6 * i + 1] - m.y0[i]) / dt;
+      }
+    }
+    const KernelForces k = kernel_forces(m, packed, w, dt);
+    ASSERT_FALSE(k.r.failed);
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t q = 0; q < k.st.s[0].size(); ++q) {
+      const double trace = k.st.s[0][q] + k.st.s[1][q];
+      lo = std::min(lo, trace);
+      hi = std::max(hi, trace);
+      if (spin != 0.0) {
+        for (int c = 0; c < 5; ++c)
+          EXPECT_NEAR(k.st.s[c][q], 0.0, 1e-9) << "component " << c;
+      }
+    }
+    if (spin == 0.0) {
+      const double c = kE / (1 - kNu);  // sxx + syy = E/(1 - nu) (dxx + dyy)
+      EXPECT_NEAR(lo, hi, 1e-9 * std::abs(hi));
+      EXPECT_NEAR(hi, c * 0.5 * dt, 2e-6 * std::abs(hi));  // tr L = 0.5 (mid-step: O(dt))
+    }
+  }
+}
+
 // Eigenvalues of a symmetric matrix (cyclic Jacobi; small matrices only).
 std::vector<double> symmetric_eigenvalues(std::vector<std::vector<double>> a) {
   const std::size_t n = a.size();
