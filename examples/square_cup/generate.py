@@ -4,7 +4,7 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
-                        [--dt2ms DT] [--name NAME]
+                        [--dt2ms DT] [--elform 2|16] [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -21,7 +21,8 @@ planes x = 0 and y = 0. Each layer of the blank is its own shell mesh:
 The outer layers touch the tools through *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (the
 tool meshes are the tools' surfaces). --n N: elements along the quarter blank's edge (the
 core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/s).
---dt2ms DT: mass scaling to the time step DT (0: none).
+--dt2ms DT: mass scaling to the time step DT (0: none). --elform 16: the blank's shells fully
+integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-Tsay.
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -257,8 +258,10 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     k += ["*DATABASE_HISTORY_NODE\n"] + ids(history)
     k += ["*HOURGLASS\n", card(1, 4, HG_QM)]
     for part, title, t, z, ne, mat, m, rows in sheets:
-        k += [f"*PART\n{title}\n", card(part, part, 1 if mat == "al" else 2, 0, 1)]
-        k += ["*SECTION_SHELL\n", card(part, 2, 0.8333, 5 if mat == "al" else 3), card(*([t] * 4))]
+        hgid = 0 if ELFORM == 16 else 1
+        k += [f"*PART\n{title}\n", card(part, part, 1 if mat == "al" else 2, 0, hgid)]
+        k += ["*SECTION_SHELL\n", card(part, ELFORM, 0.8333, 5 if mat == "al" else 3),
+              card(*([t] * 4))]
     k += ["*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\naluminium (NUMISHEET'93 hardening)\n",
           card(1, AL["rho"], AL["E"], AL["nu"], 0.0, 0.0, 0.0), card(0.0, 0.0, 1, 0),
           card(*([0.0] * 8)), card(*([0.0] * 8))]
@@ -334,6 +337,11 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     return "".join(k), params
 
 
+# The blank's shell formulation: 2 (Belytschko-Tsay, stiffness hourglass control) or 16 (fully
+# integrated, no hourglass control).
+ELFORM = 2
+
+
 def main(argv):
     outdir, name, layers, n, depth, speed, dt2ms, core_n = ".", None, 3, 30, 30.0, 3000.0, 0.0, None
     end_time = None
@@ -359,6 +367,8 @@ def main(argv):
             if key not in TUNABLE:
                 sys.exit(f"generate.py: --set takes one of {', '.join(TUNABLE)}")
             globals()[key] = float(value)
+        elif a == "--elform":
+            globals()["ELFORM"] = int(args.pop(0))
         elif a == "--name":
             name = args.pop(0)
         elif a.startswith("-"):
@@ -367,6 +377,8 @@ def main(argv):
             outdir = a
     if layers not in (1, 3):
         sys.exit("generate.py: --layers is 1 or 3")
+    if ELFORM not in (2, 16):
+        sys.exit("generate.py: --elform is 2 or 16")
     name = name or f"square_cup_{layers}"
     os.makedirs(outdir, exist_ok=True)
     text, params = deck(layers, n, depth, speed, dt2ms, core_n, end_time)

@@ -240,7 +240,10 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
   for (const auto& b : m.shell_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
     const core::Part& part = m.parts[static_cast<std::size_t>(b.part)];
-    fmt::print(out, "  part {} '{}': {} shells, NIP {}, {}{}\n", part.id, part.title, b.size(),
+    fmt::print(out, "  part {} '{}': {} shells{}, NIP {}, {}{}\n", part.id, part.title, b.size(),
+               b.formulation == core::ShellFormulation::fully_integrated
+                   ? " (ELFORM 16, fully integrated: no hourglass control)"
+                   : "",
                b.nip, material_name(mat), expansion_text(b.expansion));
     if (const auto* ply = std::get_if<core::ReinforcedThermoplastic>(&mat))
       print_woven_ply(*ply, out);

@@ -258,14 +258,24 @@ void ResultWriter::state(const engine::Snapshot& s) {
     const element::ShellBlockState& st = (*s.shells)[b];
     const core::ShellBlock& blk = model_.shell_blocks[b];
     const auto nip = static_cast<std::size_t>(st.nip);
+    const std::size_t ppe = st.points_per_element();
+    const auto inplane = static_cast<std::size_t>(st.inplane);
     for (std::size_t e = 0; e < blk.size(); ++e, ++cell) {
       double e1[3], e2[3], e3[3];
       current_shell_frame(blk, ns, e, e1, e2, e3);
       const double* axes[3] = {e1, e2, e3};
+      // Thickness point k's stress component c: ELFORM 16's mean over its in-plane points
+      // (LS-DYNA's output of the fully integrated shell), the one point's for ELFORM 2.
+      const auto mean_point = [&](int c, std::size_t k) {
+        double sum = 0.0;
+        for (std::size_t g = 0; g < inplane; ++g)
+          sum += st.s[c][e * ppe + g * nip + k];
+        return sum / static_cast<double>(inplane);
+      };
       const auto global = [&](double w_lo, std::size_t lo, std::size_t hi, double* out) {
         // Local tensor (szz = 0) at the weighted point, then to global axes.
         const auto at = [&](int c) {
-          return w_lo * st.s[c][e * nip + lo] + (1.0 - w_lo) * st.s[c][e * nip + hi];
+          return w_lo * mean_point(c, lo) + (1.0 - w_lo) * mean_point(c, hi);
         };
         const double l[3][3] = {{at(0), at(2), at(4)}, {at(2), at(1), at(3)}, {at(4), at(3), 0.0}};
         shell_stress_to_global(axes, l, out);
@@ -275,14 +285,15 @@ void ResultWriter::state(const engine::Snapshot& s) {
       global(1.0, nip - 1, nip - 1, &stress_top_[6 * cell]);
       global(1.0, 0, 0, &stress_bottom_[6 * cell]);
       double eps = 0.0;
-      for (std::size_t q = 0; q < nip; ++q)
-        eps = std::max(eps, st.eps_p[e * nip + q]);
+      for (std::size_t q = 0; q < ppe; ++q)
+        eps = std::max(eps, st.eps_p[e * ppe + q]);
       plastic_strain_[cell] = eps;
       thickness_[cell] = st.thickness[e];
       if (const auto* ply = std::get_if<core::ReinforcedThermoplastic>(
               &model_.materials[static_cast<std::size_t>(blk.material)])) {
-        // The fibres at the middle point (nip / 2), turned from the frame to global axes.
-        const std::size_t q = e * nip + nip / 2;
+        // The fibres at the middle point (nip / 2; ELFORM 16: of its first Gauss point),
+        // turned from the frame to global axes.
+        const std::size_t q = e * ppe + nip / 2;
         const material::WovenPlyState w = material::woven_ply_state(
             *ply, st.history.empty() ? nullptr : &st.history[material::WovenPlyHistory::count * q]);
         if (w.initialised) {
@@ -454,6 +465,8 @@ void ResultWriter::element_histories(const engine::Snapshot& s) {
     const element::ShellBlockState& st = (*s.shells)[b];
     const auto e = static_cast<std::size_t>(h.element);
     const auto nip = static_cast<std::size_t>(st.nip);
+    const std::size_t ppe = st.points_per_element();
+    const auto inplane = static_cast<std::size_t>(st.inplane);
     double e1[3], e2[3], e3[3];
     current_shell_frame(blk, *s.nodes, e, e1, e2, e3);
     const double* axes[3] = {e1, e2, e3};
@@ -461,15 +474,23 @@ void ResultWriter::element_histories(const engine::Snapshot& s) {
     const auto part =
         static_cast<std::int64_t>(model_.parts[static_cast<std::size_t>(blk.part)].id);
     for (std::size_t k = 0; k < nip; ++k) {
-      const std::size_t q = e * nip + k;
-      const double l[3][3] = {{st.s[0][q], st.s[2][q], st.s[4][q]},
-                              {st.s[2][q], st.s[1][q], st.s[3][q]},
-                              {st.s[4][q], st.s[3][q], 0.0}};
+      // ELFORM 16: the mean of thickness point k over the four in-plane points (LS-DYNA's
+      // elout of the fully integrated shell).
+      double m[6] = {};
+      for (std::size_t gp = 0; gp < inplane; ++gp) {
+        const std::size_t q = e * ppe + gp * nip + k;
+        for (int c = 0; c < 5; ++c)
+          m[c] += st.s[c][q];
+        m[5] += st.eps_p[q];
+      }
+      for (double& v : m)
+        v /= static_cast<double>(inplane);
+      const double l[3][3] = {{m[0], m[2], m[4]}, {m[2], m[1], m[3]}, {m[4], m[3], 0.0}};
       double g[6];
       shell_stress_to_global(axes, l, g);
       elout_->row_mixed({s.time, element, part, std::string_view("shell"),
                          static_cast<std::int64_t>(k + 1), static_cast<std::int64_t>(nip),
-                         shell_zeta_[b][k], g[0], g[1], g[2], g[3], g[4], g[5], st.eps_p[q]});
+                         shell_zeta_[b][k], g[0], g[1], g[2], g[3], g[4], g[5], m[5]});
     }
   }
 }

@@ -7,103 +7,12 @@
 #include "plyform/material/constitutive.hpp"
 #include "plyform/material/law_registry.hpp"
 #include "plyform/material/shell.hpp"
+#include "shell_common.hpp"
 
 namespace plyform::element {
 namespace {
 
-constexpr int kMaxNip = 10;
-
-// Plane-stress moduli of an isotropic law: E and nu from its small-strain K and G.
-struct PlaneStress {
-  double e, nu, g;
-};
-PlaneStress plane_stress(const core::Material& m) {
-  const double k = material::bulk_modulus(m), g = material::shear_modulus(m);
-  const double e = 9.0 * k * g / (3.0 * k + g);
-  const double nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
-  return {e, nu, g};
-}
-
-// Plate wave speed sqrt(E / (rho (1 - nu^2))) for the shell's stable step.
-double plate_wave_speed(const core::Material& m) {
-  const PlaneStress p = plane_stress(m);
-  return std::sqrt(p.e / (material::density(m) * (1.0 - p.nu * p.nu)));
-}
-
-// The law of a material's parameters (material/law_registry.hpp): the kernel reads its traits
-// only, never which law it is.
-template <class M>
-using LawOf = material::LawOf<M>;
-
-struct Geometry {
-  double e1[3], e2[3], e3[3];  // co-rotational frame
-  double xl[4], yl[4];         // local in-plane coordinates about the centroid
-  double b1[4], b2[4];         // dN/dx, dN/dy at the centre
-  double area;
-};
-
-inline bool geometry(const double x[4][3], Geometry& g) {
-  const double r31[3] = {x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]};
-  const double r42[3] = {x[3][0] - x[1][0], x[3][1] - x[1][1], x[3][2] - x[1][2]};
-  double n[3] = {r31[1] * r42[2] - r31[2] * r42[1], r31[2] * r42[0] - r31[0] * r42[2],
-                 r31[0] * r42[1] - r31[1] * r42[0]};
-  const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (!(nl > 0.0))
-    return false;
-  for (double& c : n)
-    c /= nl;
-  // e1 along the mid-side vector from edge 4-1 to edge 2-3, projected on the plane.
-  double s1[3];
-  for (int d = 0; d < 3; ++d)
-    s1[d] = 0.5 * (x[1][d] + x[2][d] - x[0][d] - x[3][d]);
-  const double sn = s1[0] * n[0] + s1[1] * n[1] + s1[2] * n[2];
-  for (int d = 0; d < 3; ++d)
-    s1[d] -= sn * n[d];
-  const double sl = std::sqrt(s1[0] * s1[0] + s1[1] * s1[1] + s1[2] * s1[2]);
-  if (!(sl > 0.0))
-    return false;
-  for (int d = 0; d < 3; ++d) {
-    g.e1[d] = s1[d] / sl;
-    g.e3[d] = n[d];
-  }
-  g.e2[0] = n[1] * g.e1[2] - n[2] * g.e1[1];
-  g.e2[1] = n[2] * g.e1[0] - n[0] * g.e1[2];
-  g.e2[2] = n[0] * g.e1[1] - n[1] * g.e1[0];
-  double c[3] = {0, 0, 0};
-  for (int i = 0; i < 4; ++i)
-    for (int d = 0; d < 3; ++d)
-      c[d] += 0.25 * x[i][d];
-  for (int i = 0; i < 4; ++i) {
-    const double r[3] = {x[i][0] - c[0], x[i][1] - c[1], x[i][2] - c[2]};
-    g.xl[i] = r[0] * g.e1[0] + r[1] * g.e1[1] + r[2] * g.e1[2];
-    g.yl[i] = r[0] * g.e2[0] + r[1] * g.e2[1] + r[2] * g.e2[2];
-  }
-  g.area =
-      0.5 * ((g.xl[2] - g.xl[0]) * (g.yl[3] - g.yl[1]) + (g.xl[1] - g.xl[3]) * (g.yl[2] - g.yl[0]));
-  if (!(g.area > 0.0))
-    return false;
-  const double inv = 1.0 / (2.0 * g.area);
-  g.b1[0] = (g.yl[1] - g.yl[3]) * inv;
-  g.b1[1] = (g.yl[2] - g.yl[0]) * inv;
-  g.b1[2] = (g.yl[3] - g.yl[1]) * inv;
-  g.b1[3] = (g.yl[0] - g.yl[2]) * inv;
-  g.b2[0] = (g.xl[3] - g.xl[1]) * inv;
-  g.b2[1] = (g.xl[0] - g.xl[2]) * inv;
-  g.b2[2] = (g.xl[1] - g.xl[3]) * inv;
-  g.b2[3] = (g.xl[2] - g.xl[0]) * inv;
-  return true;
-}
-
-// LS-DYNA's shell length: the area over the longest side (triangles: twice the area).
-double characteristic_length(const double x[4][3], double area, bool triangle) {
-  double lmax = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    const int j = (i + 1) % 4;
-    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-    lmax = std::max(lmax, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-  }
-  return lmax > 0.0 ? (triangle ? 2.0 : 1.0) * area / lmax : 0.0;
-}
+using namespace shell_detail;
 
 template <class M>
 ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
@@ -680,11 +589,12 @@ void thickness_rule(core::ThicknessRule rule, int nip, double* zeta, double* wei
 
 void ShellBlockState::resize(const core::ShellBlock& block, std::size_t history_per_point) {
   nip = block.nip;
+  inplane = block.formulation == core::ShellFormulation::fully_integrated ? 4 : 1;
   const std::size_t n = block.size();
   for (auto& c : s)
-    c.assign(n * static_cast<std::size_t>(nip), 0.0);
-  eps_p.assign(n * static_cast<std::size_t>(nip), 0.0);
-  history.assign(n * static_cast<std::size_t>(nip) * history_per_point, 0.0);
+    c.assign(n * points_per_element(), 0.0);
+  eps_p.assign(n * points_per_element(), 0.0);
+  history.assign(n * points_per_element() * history_per_point, 0.0);
   thickness.resize(n);
   for (std::size_t e = 0; e < n; ++e) {
     const double* t = &block.thickness[4 * e];
@@ -693,13 +603,15 @@ void ShellBlockState::resize(const core::ShellBlock& block, std::size_t history_
   dt_factor.assign(n, 1.0);
   area.assign(n, 0.0);
   for (auto& q : hourglass)
-    q.assign(block.hourglass.ihq >= 4 ? n : 0, 0.0);
+    q.assign(block.hourglass.ihq >= 4 && inplane == 1 ? n : 0, 0.0);
 }
 
 ShellResult shell_forces(const core::ShellBlock& block, const core::Material& material,
                          ShellBlockState& state, const NodalView& nodes, const NodalSpin& spin,
                          double dt, std::size_t begin, std::size_t end, const NodalForces& forces,
                          const NodalMoments& moments) {
+  if (block.formulation == core::ShellFormulation::fully_integrated)
+    return shell_full_forces(block, material, state, nodes, spin, dt, begin, end, forces, moments);
   const double c = plate_wave_speed(material);
   const double rho = material::density(material);
   return std::visit(

@@ -193,14 +193,14 @@ struct Builder {
         m.solid_blocks.push_back(std::move(b));
       } else {
         const model::SectionShellDesc& sec = *shell->second;
-        // A rigid part's shells only carry its mass and surface: their formulation does not
-        // enter the run (a tool meshed with the fully integrated shell is read as it is).
-        if (sec.elform != 2 && !rigid) {
+        if (sec.elform != 2 && sec.elform != 16) {
           error(sec.where, "*SECTION_SHELL", "ELFORM",
                 "ELFORM " + std::to_string(sec.elform) +
-                    " is not supported yet: plyform has the Belytschko-Tsay shell, ELFORM 2");
+                    " is not supported yet: plyform has the Belytschko-Tsay shell, ELFORM 2, "
+                    "and the fully integrated shell, ELFORM 16");
           continue;
         }
+        const bool fully_integrated = sec.elform == 16;
         if (!rigid && !element::supports_shells(law)) {
           error(p.where, "*PART", "MID",
                 "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
@@ -232,7 +232,21 @@ struct Builder {
         b.nip = sec.nip;
         b.shear_factor = sec.shear_factor;
         b.hourglass = hourglass_of(p, 5, "shells");
-        if (std::holds_alternative<core::ReinforcedThermoplastic>(law) && b.hourglass.ihq < 4) {
+        if (fully_integrated) {
+          // 2 x 2 Gauss points leave no hourglass modes: like LS-DYNA, ELFORM 16 ignores
+          // hourglass control (and the bulk viscosity of the shells, not in its kernel yet).
+          b.formulation = core::ShellFormulation::fully_integrated;
+          if (p.hourglass_id != 0)
+            out.warnings.push_back(
+                {p.where, "*PART", "HGID",
+                 "part " + std::to_string(p.id) +
+                     ": *HOURGLASS is ignored for the fully integrated shell (ELFORM 16), "
+                     "which has no hourglass modes"});
+          b.hourglass = core::HourglassControl{};
+          b.hourglass.qm = 0.0;
+        }
+        if (!fully_integrated && std::holds_alternative<core::ReinforcedThermoplastic>(law) &&
+            b.hourglass.ihq < 4) {
           // The one-point element holds the fibres inextensible at its centre only: a viscous
           // hourglass force does not resist the edges (the fibres of a fibre-aligned mesh)
           // stretching while their mean stays, and a bias-extension specimen then shears up to
@@ -254,7 +268,15 @@ struct Builder {
           b.rule = core::ThicknessRule::lobatto;
         }
         // *CONTROL_BULK_VISCOSITY TYPE -1 or -2 puts the bulk viscosity in the shells too.
-        b.bulk_viscosity_on = d.bulk_viscosity && d.bulk_viscosity->type < 0;
+        b.bulk_viscosity_on = !fully_integrated && d.bulk_viscosity && d.bulk_viscosity->type < 0;
+        if (fully_integrated && d.bulk_viscosity && d.bulk_viscosity->type < 0)
+          out.warnings.push_back(
+              {p.where, "*PART", "SECID",
+               "part " + std::to_string(p.id) +
+                   ": the shells' bulk viscosity (*CONTROL_BULK_VISCOSITY TYPE " +
+                   std::to_string(d.bulk_viscosity->type) +
+                   ") is not in the fully integrated shell (ELFORM 16) yet; its part runs "
+                   "without it"});
         b.bulk_viscosity = bulk_viscosity_of(p);
         shell_block_of_part.emplace(p.id, m.shell_blocks.size());
         m.shell_blocks.push_back(std::move(b));

@@ -104,14 +104,14 @@ std::string outputs(int history_node) {
 // A strip of 10 x 1 shells of 1 mm (NIP 3) along d = (cos a, sin a, 0), its end i = 10 pulled
 // along d at `speed`. `plastic`: *MAT_PLASTIC_KINEMATIC, the held end free across the strip (a
 // = 0 only); else *MAT_ELASTIC with PR 0, both ends held across (no contraction to block).
-std::string strip_deck(double angle, bool plastic, double speed) {
+std::string strip_deck(double angle, bool plastic, double speed, int elform = 2) {
   const double c = std::cos(angle), s = std::sin(angle);
   const auto nid = [](int i, int j) { return 1 + i + 11 * j; };
   std::ostringstream os;
   os.precision(17);
   os << "*KEYWORD\n*CONTROL_TERMINATION\n" << kEnd << ",0\n" << outputs(nid(10, 0));
   os << "*DATABASE_HISTORY_SHELL\n5,0,0,0,0,0,0,0\n";
-  os << "*PART\nstrip\n1,1,1\n*SECTION_SHELL\n1,2,0.8333,3\n"
+  os << "*PART\nstrip\n1,1,1\n*SECTION_SHELL\n1," << elform << ",0.8333,3\n"
      << kT << "," << kT << "," << kT << "," << kT << "\n";
   if (plastic) {
     os << "*MAT_PLASTIC_KINEMATIC\n1," << kRho << "," << kE << ",0.3," << kSigmaY << "," << kEt
@@ -163,10 +163,14 @@ std::map<std::string, double> stretch_of(const Csv& nodout, double angle) {
   return u;
 }
 
-TEST(DeckElout, ElasticStripAtAnAngleWritesGlobalStressEqualToForceOverArea) {
+// ELFORM 2 and 16 (ELFORM 16: each thickness point's mean over the four in-plane points).
+class DeckEloutStrip : public ::testing::TestWithParam<int> {};
+
+TEST_P(DeckEloutStrip, ElasticStripAtAnAngleWritesGlobalStressEqualToForceOverArea) {
   test::TempDir dir;
   const double angle = std::numbers::pi / 6.0, c = std::cos(angle), s = std::sin(angle);
-  const auto out = run(dir, "strip_elastic.k", strip_deck(angle, false, 0.02 / (0.875 * kEnd)));
+  const auto out =
+      run(dir, "strip_elastic.k", strip_deck(angle, false, 0.02 / (0.875 * kEnd), GetParam()));
   const Csv elout = read_csv(out / "elout.csv");
   const Csv spcforc = read_csv(out / "spcforc.csv");
   const auto u = stretch_of(read_csv(out / "nodout.csv"), angle);
@@ -212,9 +216,10 @@ TEST(DeckElout, ElasticStripAtAnAngleWritesGlobalStressEqualToForceOverArea) {
   EXPECT_LT(worst_off, 1e-9);
 }
 
-TEST(DeckElout, PlasticStripFollowsTheBilinearLawAtEveryThicknessPoint) {
+TEST_P(DeckEloutStrip, PlasticStripFollowsTheBilinearLawAtEveryThicknessPoint) {
   test::TempDir dir;
-  const auto out = run(dir, "strip_plastic.k", strip_deck(0.0, true, 0.2 / (0.875 * kEnd)));
+  const auto out =
+      run(dir, "strip_plastic.k", strip_deck(0.0, true, 0.2 / (0.875 * kEnd), GetParam()));
   const Csv elout = read_csv(out / "elout.csv");
   const auto u = stretch_of(read_csv(out / "nodout.csv"), 0.0);
   ASSERT_EQ(elout.rows.size(), 21u * 3u);
@@ -240,6 +245,11 @@ TEST(DeckElout, PlasticStripFollowsTheBilinearLawAtEveryThicknessPoint) {
   EXPECT_LT(worst_stress, 1e-3);
   EXPECT_LT(worst_plastic, 5e-3);
 }
+
+INSTANTIATE_TEST_SUITE_P(Elform, DeckEloutStrip, ::testing::Values(2, 16),
+                         [](const ::testing::TestParamInfo<int>& i) {
+                           return "ELFORM_" + std::to_string(i.param);
+                         });
 
 // A bar of 4 x 1 x 1 hexahedra of 1 mm (ELFORM 1, or 2: the mean of its points), symmetry
 // planes x = 0, y = 0, z = 0, the face x = 4 pulled: uniaxial stress in every element.

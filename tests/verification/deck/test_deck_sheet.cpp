@@ -86,29 +86,23 @@ TEST(DeckSheet, RigidPunchOnAPlasticPlate) {
   EXPECT_LT(last.hourglass, 0.05 * last.internal);
 }
 
-TEST(DeckSheet, FullyIntegratedShellsAreReadOnRigidToolsOnly) {
-  // A rigid punch meshed with ELFORM 16 builds (its shells carry only mass and surface); the
-  // deformable plate with ELFORM 16 is an error on its section (not implemented yet).
-  const std::string deck = sheet_deck();
-  const std::string punch = "*SECTION_SHELL\n         2         2       1.0         1\n";
-  const std::string plate = "*SECTION_SHELL\n         1         2    0.8333         5\n";
-  std::string rigid16 = deck;
-  rigid16.replace(rigid16.find(punch), punch.size(),
-                  "*SECTION_SHELL\n         2        16       1.0         1\n");
-  const auto read = keyword::read_deck_text(rigid16, "sheet.k");
+TEST(DeckSheet, FullyIntegratedShellsBuildOnToolsAndSheets) {
+  // ELFORM 16 on the rigid punch (its shells carry only mass and surface) and on the plate (the
+  // fully integrated shell, 4 x NIP points per element, no hourglass control).
+  std::string deck = sheet_deck();
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{
+                                     "*SECTION_SHELL\n         2         2       1.0         1\n",
+                                     "*SECTION_SHELL\n         2        16       1.0         1\n"},
+                                 std::pair<std::string, std::string>{
+                                     "*SECTION_SHELL\n         1         2    0.8333         5\n",
+                                     "*SECTION_SHELL\n         1        16    0.8333         5\n"}})
+    deck.replace(deck.find(from), from.size(), to);
+  const auto read = keyword::read_deck_text(deck, "sheet.k");
   ASSERT_TRUE(read.ok()) << read.errors.front().to_string();
   const auto built = setup::build(read.model);
-  EXPECT_TRUE(built.errors.empty()) << built.errors.front().to_string();
-  std::string plate16 = deck;
-  plate16.replace(plate16.find(plate), plate.size(),
-                  "*SECTION_SHELL\n         1        16    0.8333         5\n");
-  const auto read16 = keyword::read_deck_text(plate16, "sheet.k");
-  ASSERT_TRUE(read16.ok());
-  const auto refused = setup::build(read16.model);
-  ASSERT_EQ(refused.errors.size(), 1u);
-  EXPECT_EQ(refused.errors.front().field, "ELFORM");
-  EXPECT_NE(refused.errors.front().message.find("ELFORM 16 is not supported yet"),
-            std::string::npos);
+  ASSERT_TRUE(built.errors.empty()) << built.errors.front().to_string();
+  ASSERT_EQ(built.model->shell_blocks.size(), 2u);
+  EXPECT_EQ(built.model->shell_blocks[0].formulation, core::ShellFormulation::fully_integrated);
 }
 
 }  // namespace

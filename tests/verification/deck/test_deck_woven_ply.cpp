@@ -19,13 +19,13 @@
 namespace plyform {
 namespace {
 
-std::string frame_deck(double temperature, const char* part = "1,1,249\n") {
+std::string frame_deck(double temperature, const char* part = "1,1,249\n", int elform = 2) {
   std::ostringstream os;
   os << "*KEYWORD\n*INCLUDE\n"
      << PLYFORM_SOURCE_DIR << "/examples/materials/cf_pa6_woven_ply.k\n"
      << "*CONTROL_TERMINATION\n0.001\n*DATABASE_GLSTAT\n0.0001\n"
      << "*PART\nply\n"
-     << part << "*SECTION_SHELL\n1,2,0.8333,3\n0.5,0.5,0.5,0.5\n"
+     << part << "*SECTION_SHELL\n1," << elform << ",0.8333,3\n0.5,0.5,0.5,0.5\n"
      << "*INITIAL_TEMPERATURE_SET\n0," << temperature << "\n*NODE\n";
   for (int j = 0; j <= 2; ++j)
     for (int i = 0; i <= 2; ++i)
@@ -41,15 +41,22 @@ std::string frame_deck(double temperature, const char* part = "1,1,249\n") {
   return os.str();
 }
 
-TEST(DeckWovenPly, ShippedCarbonPa6SetShearsByItsTableInAPictureFrame) {
+class DeckWovenPlyFrame : public ::testing::TestWithParam<int> {};
+
+TEST_P(DeckWovenPlyFrame, ShippedCarbonPa6SetShearsByItsTableInAPictureFrame) {
   test::TempDir dir;
-  const auto read = keyword::read_deck(dir.write("frame.k", frame_deck(260.0)));
+  const int elform = GetParam();
+  const auto read =
+      keyword::read_deck(dir.write("frame.k", frame_deck(260.0, "1,1,249\n", elform)));
   ASSERT_TRUE(read.ok()) << read.errors.front().to_string();
   const auto errors = setup::validate(read.model);
   ASSERT_TRUE(errors.empty()) << errors.front().to_string();
   auto built = setup::build(read.model);
   ASSERT_TRUE(built.errors.empty()) << built.errors.front().to_string();
   core::Model m = std::move(*built.model);
+  EXPECT_EQ(m.shell_blocks.at(0).formulation, elform == 16
+                                                  ? core::ShellFormulation::fully_integrated
+                                                  : core::ShellFormulation::belytschko_tsay);
   const auto& ply = std::get<core::ReinforcedThermoplastic>(m.materials.at(0));
   ASSERT_EQ(ply.shear[0].stress.value, (std::vector<double>{230.0, 260.0, 280.0}));
   EXPECT_DOUBLE_EQ(ply.fibre[1].modulus, 52000.0);
@@ -80,7 +87,15 @@ TEST(DeckWovenPly, ShippedCarbonPa6SetShearsByItsTableInAPictureFrame) {
   const engine::Energies& e = sink.energies.back();
   EXPECT_NEAR(e.internal / (side * side), expected, 0.02 * expected)
       << "shear " << shear << ", matrix " << matrix;
+  if (elform == 16) {
+    EXPECT_EQ(e.hourglass, 0.0);
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(Elform, DeckWovenPlyFrame, ::testing::Values(2, 16),
+                         [](const ::testing::TestParamInfo<int>& i) {
+                           return "ELFORM_" + std::to_string(i.param);
+                         });
 
 // The one-point shell holds the fibres inextensible at its centre only: a woven ply with viscous
 // hourglass control is warned about (by part, naming HGID and IHQ 4), one with IHQ 4 is not.
@@ -99,6 +114,17 @@ TEST(DeckWovenPly, ViscousHourglassControlIsWarnedAbout) {
   EXPECT_NE(viscous.find("IHQ 4"), std::string::npos) << viscous;
   const std::string stiff = warnings_of(frame_deck(260.0, "1,1,249,0,7\n*HOURGLASS\n7,4,0.03\n"));
   EXPECT_EQ(stiff.find("HGID"), std::string::npos) << stiff;
+  // The fully integrated shell has no hourglass modes: no advice to use IHQ 4, and a given
+  // *HOURGLASS is said to be ignored (as LS-DYNA ignores it for ELFORM 16).
+  const std::string full = warnings_of(frame_deck(260.0, "1,1,249\n", 16));
+  EXPECT_EQ(full.find("HGID"), std::string::npos) << full;
+  const std::string full_hg =
+      warnings_of(frame_deck(260.0, "1,1,249,0,7\n*HOURGLASS\n7,4,0.03\n", 16));
+  EXPECT_NE(full_hg.find("ignored for the fully integrated shell"), std::string::npos) << full_hg;
+  // Nor has it the shells' bulk viscosity yet: said so, not silently dropped.
+  const std::string full_bv =
+      warnings_of(frame_deck(260.0, "1,1,249\n*CONTROL_BULK_VISCOSITY\n1.5,0.06,-2\n", 16));
+  EXPECT_NE(full_bv.find("not in the fully integrated shell"), std::string::npos) << full_bv;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "homogeneous_motion.hpp"
@@ -77,7 +78,7 @@ FrameRun run_frame(core::Model& m, double gamma_max, double end) {
   return out;
 }
 
-TEST(WovenPly, PictureFrameAngleAndShearEnergyFollowTheFrameAndTheCurve) {
+void picture_frame_follows_the_frame_and_the_curve(core::ShellFormulation formulation) {
   // Shear curve tau(g) = 0.02 g + 0.3 g^3 (MPa, g in radians), tabulated finely; matrix and
   // fibres far softer and stiffer than it (the fibres do not stretch in a picture frame).
   core::ReinforcedThermoplastic ply = woven(1e-4, 50000.0, 0.0);
@@ -91,6 +92,7 @@ TEST(WovenPly, PictureFrameAngleAndShearEnergyFollowTheFrameAndTheCurve) {
   ply.shear[0].meth = 2;
   const double side = 10.0, t = 1.0, gmax = 55.0 * kDeg;
   core::Model m = test::plate(side, side, 2, 2, t, ply, 3);
+  m.shell_blocks[0].formulation = formulation;
   test::prescribe_homogeneous(m, 1e-3, 400,
                               [&](double s, double f[2][2]) { test::picture_frame(gmax * s, f); });
   FrameRun run = run_frame(m, gmax, 1e-3);
@@ -105,6 +107,16 @@ TEST(WovenPly, PictureFrameAngleAndShearEnergyFollowTheFrameAndTheCurve) {
   const engine::Energies& e = run.sink.energies.back();
   EXPECT_NEAR(e.internal / (side * side), work, 0.02 * work);
   EXPECT_LT(e.hourglass, 0.01 * e.internal);
+}
+
+TEST(WovenPly, PictureFrameAngleAndShearEnergyFollowTheFrameAndTheCurve) {
+  picture_frame_follows_the_frame_and_the_curve(core::ShellFormulation::belytschko_tsay);
+}
+
+// The same with the fully integrated shell (ELFORM 16): the law at its four in-plane points,
+// every one of them on the frame's angle, no hourglass energy at all.
+TEST(WovenPly, PictureFrameWithTheFullyIntegratedShell) {
+  picture_frame_follows_the_frame_and_the_curve(core::ShellFormulation::fully_integrated);
 }
 
 TEST(WovenPly, PictureFrameAtTwoTemperaturesFollowsEachCurveOfTheTable) {
@@ -300,7 +312,8 @@ struct BiasResult {
   double slope_locked = 0.0;    // 48 to 51 degrees
 };
 
-BiasResult bias_extension(int nx, int ny) {
+BiasResult bias_extension(
+    int nx, int ny, core::ShellFormulation formulation = core::ShellFormulation::belytschko_tsay) {
   const double w = 20.0, h = w * ny / nx, t = 0.5, dl = h - w;
   core::ReinforcedThermoplastic ply = woven(0.2, 5000.0, 0.05);
   ply.a[0] = 0.0, ply.a[1] = 1.0;  // axis a along the pull (y)
@@ -312,6 +325,7 @@ BiasResult bias_extension(int nx, int ny) {
   // Stiffness hourglass control: a viscous one lets the element edges, the fibres of this
   // fibre-aligned mesh, stretch in the hourglass modes (the warning of setup::build).
   m.shell_blocks[0].hourglass.ihq = 4;
+  m.shell_blocks[0].formulation = formulation;  // ELFORM 16 has no hourglass control
   const auto gamma_of = [&](double d) {
     return 0.5 * kPi - 2.0 * std::acos((dl + d) / (std::sqrt(2.0) * dl));
   };
@@ -354,12 +368,16 @@ BiasResult bias_extension(int nx, int ny) {
   test::RecordingSink sink;
   sink.on_state = [&](const engine::Snapshot& s) {
     const element::ShellBlockState& st = (*s.shells)[0];
+    // The mean over the central elements' points (all of each element's points: the
+    // history is per point, e * points_per_element() + k).
     double g = 0.0;
-    for (std::size_t e : central) {
-      const material::WovenPlyState ws =
-          material::woven_ply_state(ply, &st.history[material::WovenPlyHistory::count * e]);
-      g += ws.shear_angle[0] / static_cast<double>(central.size());
-    }
+    const std::size_t ppe = st.points_per_element();
+    for (std::size_t e : central)
+      for (std::size_t k = 0; k < ppe; ++k) {
+        const material::WovenPlyState ws = material::woven_ply_state(
+            ply, &st.history[material::WovenPlyHistory::count * (e * ppe + k)]);
+        g += ws.shear_angle[0] / static_cast<double>(central.size() * ppe);
+      }
     double f = 0.0;
     for (core::Index n : top)
       f += s.nodes->ry[static_cast<std::size_t>(n)];
@@ -398,6 +416,19 @@ TEST(WovenPly, BiasExtensionCentralZoneFollowsTheKinematicFormulaAndLocks) {
   const BiasResult fine = bias_extension(10, 20);
   EXPECT_LT(fine.worst / kDeg, 1.0);
   // The force: a slow rise while the weave shears, more than ten times steeper once locked.
+  EXPECT_GT(fine.slope_shearing, 0.0);
+  EXPECT_GT(fine.slope_locked, 10.0 * fine.slope_shearing);
+  std::printf("[bias extension, ELFORM 2 IHQ 4] worst %.3g degrees\n", fine.worst / kDeg);
+}
+
+// The same with the fully integrated shell: no hourglass modes for the fibres to stretch in.
+TEST(WovenPly, BiasExtensionWithTheFullyIntegratedShell) {
+  const BiasResult fine = bias_extension(10, 20, core::ShellFormulation::fully_integrated);
+  std::printf(
+      "[bias extension, ELFORM 16] worst %.3g degrees, slopes %.4g (shearing), %.4g "
+      "(locked)\n",
+      fine.worst / kDeg, fine.slope_shearing, fine.slope_locked);
+  EXPECT_LT(fine.worst / kDeg, 1.0);
   EXPECT_GT(fine.slope_shearing, 0.0);
   EXPECT_GT(fine.slope_locked, 10.0 * fine.slope_shearing);
 }

@@ -189,7 +189,10 @@ KeywordSpec section_shell_keyword() {
           .cards = kCards,
           .summary =
               "The formulation, through-thickness integration and thickness of shell "
-              "elements. ELFORM 2 and 16, Gauss integration with NIP 1..10 points, and "
+              "elements. ELFORM 2 (Belytschko-Tsay: one in-plane point, hourglass control) and "
+              "16 (fully integrated: 2 x 2 in-plane points, MITC4 transverse shear, no "
+              "hourglass modes, so a part's *HOURGLASS is ignored with a warning), Gauss "
+              "integration with NIP 1..10 points, and "
               "per-point material angles (ICOMP = 1) are read; offsets (NLOC), non-structural "
               "mass (MAREA), IDOF and EDGSET must be 0. The cards of user-defined shells "
               "(ELFORM 101-105) are not read. An element's *ELEMENT_SHELL_THICKNESS card "

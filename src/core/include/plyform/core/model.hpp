@@ -57,6 +57,9 @@ struct SolidBlock {
 /// Shell formulations of *SECTION_SHELL.
 enum class ShellFormulation : int {
   belytschko_tsay = 2,  ///< ELFORM 2: co-rotational, one in-plane point, hourglass control
+  /// ELFORM 16: co-rotational, 2 x 2 in-plane Gauss points, assumed natural strain transverse
+  /// shear (MITC4); no hourglass modes, so no hourglass control.
+  fully_integrated = 16,
 };
 
 /// Through-thickness integration rule of *SECTION_SHELL (QR/IRID).

@@ -25,8 +25,15 @@ struct NodalSpin {
 
 /// State of a shell block: stresses in the element's co-rotational frame at every
 /// through-thickness point (xx, yy, xy, yz, zx), effective plastic strain, current thickness.
+/// ELFORM 16 keeps every in-plane Gauss point's column: arrays of points hold
+/// points_per_element() values per element, Gauss point major (point g, thickness point k at
+/// e * points_per_element() + g * nip + k).
 struct ShellBlockState {
   int nip = 2;
+  int inplane = 1;  ///< in-plane integration points: 1 (ELFORM 2) or 4 (ELFORM 16)
+  [[nodiscard]] std::size_t points_per_element() const {
+    return static_cast<std::size_t>(nip) * static_cast<std::size_t>(inplane);
+  }
   std::vector<double> s[5];
   std::vector<double> eps_p;
   std::vector<double> thickness;  ///< per element
@@ -64,6 +71,12 @@ ShellResult shell_forces(const core::ShellBlock& block, const core::Material& ma
                          ShellBlockState& state, const NodalView& nodes, const NodalSpin& spin,
                          double dt, std::size_t begin, std::size_t end, const NodalForces& forces,
                          const NodalMoments& moments);
+
+/// The fully integrated kernel (ELFORM 16, shell_full.cpp); shell_forces dispatches to it.
+ShellResult shell_full_forces(const core::ShellBlock& block, const core::Material& material,
+                              ShellBlockState& state, const NodalView& nodes, const NodalSpin& spin,
+                              double dt, std::size_t begin, std::size_t end,
+                              const NodalForces& forces, const NodalMoments& moments);
 
 /// Stable step of element e alone (LS-DYNA's shell length: area over the longest side), from
 /// the reference configuration.
