@@ -224,6 +224,27 @@ TEST(ContactTiebreak, TheCardAfterCard3IsRead) {
   EXPECT_EQ(r.model.contacts[2].id, 5);
 }
 
+TEST(ContactTiebreak, ThermalFollowsTheTiebreakCard) {
+  // LS-DYNA's order: the contact type (with TIEBREAK), then THERMAL, then ID; the thermal card
+  // comes after the tiebreak card.
+  const ReadResult r = read_ok(
+      "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_THERMAL_ID\n"
+      "4\n1,2,3,3\n0.2,0.2\n1.0,1.0\n2,0.5,0.5\n0.0,0.0,10.0,0.01,0.1,0.5,0,0\n");
+  ASSERT_EQ(r.model.contacts.size(), 1u);
+  const model::ContactDesc& a = r.model.contacts[0];
+  EXPECT_EQ(a.id, 4);
+  EXPECT_TRUE(a.tiebreak);
+  EXPECT_TRUE(a.thermal);
+  EXPECT_EQ(a.tiebreak_option, 2);
+  EXPECT_DOUBLE_EQ(a.nfls, 0.5);
+  EXPECT_DOUBLE_EQ(a.h0, 10.0);
+  EXPECT_DOUBLE_EQ(a.lmin, 0.01);
+  EXPECT_DOUBLE_EQ(a.lmax, 0.1);
+  expect_error("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_THERMAL\n1,2,3,3\n\n\n2,1,1\n", 1,
+               "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK_THERMAL", "",
+               "_THERMAL needs its thermal card");
+}
+
 TEST(ContactTiebreak, OptionsAndFieldsPlyformDoesNotImplementAreNamed) {
   constexpr std::string_view kKw = "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK";
   const std::string head = std::string(kKw) + "\n1,2,3,3\n\n\n";

@@ -1,7 +1,8 @@
 // *CONTACT_ONE_WAY_SURFACE_TO_SURFACE, *CONTACT_SURFACE_TO_SURFACE,
 // *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE, *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE and
 // *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE, each with _ID or _TITLE (the ID card first), the
-// automatic ones also with _TIEBREAK (its card right after card 3). Cards 1-3 and optional card A,
+// automatic ones also with _TIEBREAK (its card right after card 3; with _TIEBREAK_THERMAL the
+// thermal card follows it). Cards 1-3 and optional card A,
 // as LS-DYNA lays them out; cards 2, 3 and A may be left out at the end of the keyword (defaults).
 // Fields plyform does not implement must keep their defaults: each other value is an error naming
 // the field.
@@ -21,7 +22,7 @@ constexpr std::array<std::string_view, 12> kContactOptions{
     "MPP", "ID_MPP", "TITLE_MPP", "THERMAL_MPP", "THERMAL_ID_MPP", "THERMAL_TITLE_MPP"};
 // The automatic contacts also come as LS-DYNA's built-in tiebreak (the alternative to the
 // cohesive law that the seed paper names).
-constexpr std::array<std::string_view, 18> kAutomaticOptions{"",
+constexpr std::array<std::string_view, 24> kAutomaticOptions{"",
                                                              "ID",
                                                              "TITLE",
                                                              "THERMAL",
@@ -30,6 +31,9 @@ constexpr std::array<std::string_view, 18> kAutomaticOptions{"",
                                                              "TIEBREAK",
                                                              "TIEBREAK_ID",
                                                              "TIEBREAK_TITLE",
+                                                             "TIEBREAK_THERMAL",
+                                                             "TIEBREAK_THERMAL_ID",
+                                                             "TIEBREAK_THERMAL_TITLE",
                                                              "MPP",
                                                              "ID_MPP",
                                                              "TITLE_MPP",
@@ -38,7 +42,10 @@ constexpr std::array<std::string_view, 18> kAutomaticOptions{"",
                                                              "THERMAL_TITLE_MPP",
                                                              "TIEBREAK_MPP",
                                                              "TIEBREAK_ID_MPP",
-                                                             "TIEBREAK_TITLE_MPP"};
+                                                             "TIEBREAK_TITLE_MPP",
+                                                             "TIEBREAK_THERMAL_MPP",
+                                                             "TIEBREAK_THERMAL_ID_MPP",
+                                                             "TIEBREAK_THERMAL_TITLE_MPP"};
 
 constexpr std::array kSlaveTypes{0, 2, 3, 4};
 constexpr std::array kMasterTypes{0, 2, 3};
@@ -454,7 +461,7 @@ constexpr std::array kCards{
     CardSpec{.title = "Thermal card",
              .fields = kThermalCard,
              .presence = "with _THERMAL only: required, right after card 3 (cards 2 and 3 "
-                         "must then be given)"},
+                         "must then be given), or after the tiebreak card with _TIEBREAK_THERMAL"},
     kMppCard,
 };
 constexpr std::size_t kThermalCardIndex = 8;
@@ -575,7 +582,8 @@ void read_contact(KeywordInput& in, model::ContactKind kind) {
   c.keyword = in.keyword().display();
   c.where = in.keyword_where();
   const std::string_view option = in.option();
-  c.thermal = option.starts_with("THERMAL");
+  // _THERMAL alone or after _TIEBREAK (LS-DYNA's order: the contact type, then THERMAL).
+  c.thermal = option.starts_with("THERMAL") || option.starts_with("TIEBREAK_THERMAL");
   const bool tiebreak = option.starts_with("TIEBREAK");
   const std::string_view base =
       option.ends_with("MPP")
