@@ -154,7 +154,7 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
         at(kInterfaceEnergy));
   }
   for (const core::ContactInterface& c : model.contacts)
-    cohesive_model_ = cohesive_model_ || c.cohesive;
+    cohesive_model_ = cohesive_model_ || c.cohesive || c.tiebreak.option > 0;
   if (cohesive_model_ && model.output.nodout_dt > 0.0 && !model.output.history_nodes.empty())
     cohesive_.emplace(outdir / output::cohesive_file_name, at(kCohesive));
   if (model.thermal.enabled) {

@@ -65,7 +65,8 @@ class ResultWriter : public engine::OutputSink {
   std::optional<output::CohesiveFile> cohesive_;
   std::optional<output::CsvHistory> heat_;    // heat.csv (temperatures computed)
   std::optional<output::CsvHistory> tprint_;  // tprint.csv (*DATABASE_TPRINT)
-  bool cohesive_model_ = false;  // a cohesive interface: its arrays go into the VTU states
+  bool cohesive_model_ =
+      false;  // a cohesive or tiebreak interface: its arrays go into the VTU states
   std::vector<contact::SlaveNodeResult> slave_results_;
   output::ProgressLine progress_;
   // The parts of every state that do not change: cells and ids.

@@ -1355,7 +1355,8 @@ void ContactSet::cohesive_results(std::vector<SlaveNodeResult>& out) const {
   out.clear();
   for (const auto& pp : passes_) {
     const PassRuntime& pr = *pp;
-    if (!pr.iface->cohesive)
+    // A tiebreak's history is the law's too: beta 1 while a node is tied, 0 once it failed.
+    if (!pr.iface->cohesive && pr.iface->tiebreak.option == 0)
       continue;
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {

@@ -36,6 +36,7 @@ std::string deck(const Tie& c) {
   d.kw("*CONTROL_TERMINATION").card(c.end);
   d.kw("*DATABASE_GLSTAT").card(c.end / 2000);
   d.kw("*DATABASE_RCFORC").card(c.end / 2000);
+  d.kw("*DATABASE_NODOUT").card(c.end / 200);
   d.kw("*PART").kw("master").card(1, 1, 1);
   d.kw("*PART").kw("slave").card(2, 1, 1);
   d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
@@ -44,6 +45,7 @@ std::string deck(const Tie& c) {
   const auto slave = d.plate(2, 1001, 1001, 2.5, 5.5, 2.5, 5.5, 1, 1, 1.0 + c.gap);
   d.kw("*SET_NODE_LIST").card(1).ids(master);
   d.kw("*SET_NODE_LIST").card(2).ids(slave);
+  d.kw("*DATABASE_HISTORY_NODE").ids(slave);
   d.kw("*BOUNDARY_SPC_SET").card(1, 0, 1, 1, 1, 1, 1, 1);
   d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 1, 0, 1, 1, 1);
   d.kw("*DEFINE_CURVE").card(1).card(0.0, 1.0).card(c.end, 1.0);
@@ -111,6 +113,17 @@ TEST(ContactTiebreak, NormalPullFailsAtNfls) {
     EXPECT_GT(last.damage, 0.0) << card;
     EXPECT_EQ(last.bonded, 0u) << card;
     expect_books_close(r, card);
+    // The slave nodes' results (cohesive.csv, the VTU's beta): 1 while tied, 0 once failed.
+    ASSERT_FALSE(r.cohesive.empty()) << card;
+    for (const auto& [t, nodes] : r.cohesive) {
+      ASSERT_EQ(nodes.size(), 4u) << card;
+      for (const auto& n : nodes) {
+        EXPECT_EQ(n.interface, 7);
+        EXPECT_EQ(n.beta, t < p.time ? 1.0 : t > p.time + 1e-6 ? 0.0 : n.beta) << card << " " << t;
+      }
+    }
+    EXPECT_EQ(r.cohesive.front().second.front().beta, 1.0) << card;
+    EXPECT_EQ(r.cohesive.back().second.front().beta, 0.0) << card;
   }
 }
 

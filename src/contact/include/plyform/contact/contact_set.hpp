@@ -112,7 +112,8 @@ class ContactSet {
   /// Total contact energy (all interfaces): the glstat `contact` column.
   [[nodiscard]] double energy() const;
   [[nodiscard]] std::vector<InterfaceReport> report() const;
-  /// Slave nodes of the cohesive interfaces, pass by pass.
+  /// Slave nodes of the cohesive and the tiebreak interfaces (beta: 1 tied, 0 failed), pass by
+  /// pass.
   void cohesive_results(std::vector<SlaveNodeResult>& out) const;
   /// The slave nodes of the _THERMAL interfaces within LMAX of a master segment, pass by pass
   /// (a two-way interface's two passes each carry half the area; a one-way one (ALGO 1) only
