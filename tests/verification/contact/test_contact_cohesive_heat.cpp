@@ -2,6 +2,7 @@
 // a hot and a cold plate bonded at t = 0 approach the capacity-weighted mean temperature with
 // the conductance's time constant C1 C2 / (h A (C1 + C2)) while bonded, and once the slave is
 // pulled beyond LMAX (full separation) no heat crosses: both temperatures stay where they were.
+// The same with the layers tied by a tiebreak contact (_TIEBREAK_THERMAL) until the tie fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,7 +19,10 @@ namespace {
 constexpr double kRho = 7.85e-9, kC = 5e8, kH0 = 1.0;
 constexpr double kHot = 400.0, kCold = 300.0;
 
-std::string heated_bond_deck() {
+// tiebreak: the layers tied by LS-DYNA's built-in tiebreak (_TIEBREAK_THERMAL, OPTION 2, failing
+// at 1 MPa) instead of the cohesive law: the same heat while tied, none once the tie failed and
+// the plates are apart.
+std::string heated_bond_deck(bool tiebreak = false) {
   test::DeckWriter d;
   d.kw("*CONTROL_TERMINATION").card(8e-3);
   d.kw("*DATABASE_NODOUT").card(2.5e-4);
@@ -43,6 +47,12 @@ std::string heated_bond_deck() {
   // LMAX 0.1) by 5 ms, held there.
   d.kw("*DEFINE_CURVE").card(1).raw("0,0\n0.004,0\n0.005,0.5\n0.008,0.5\n");
   d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 3, 2, 1, 1.0);
+  if (tiebreak) {
+    d.kw("*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK_THERMAL_ID").card(3, "tied");
+    d.card(2, 1, 3, 3).card(0).card(1, 1).card(2, 1.0, 1.0);
+    d.card(0.0, 0.0, kH0, 1e-5, 0.1, 0.5, 0, 0);
+    return d.text();
+  }
   d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_THERMAL_ID").card(3, "bonded layers");
   d.card(2, 1, 3, 3).card(0).card(1, 1);
   d.card(0.0, 0.0, kH0, 1e-5, 0.1, 0.5, 0, 0);  // K FRAD H0 LMIN LMAX FTOSA BC_FLG ALGO
@@ -62,9 +72,10 @@ double mean(const std::vector<double>& t, std::size_t first, std::size_t count) 
   return s / static_cast<double>(count);
 }
 
-TEST(ContactCohesiveHeat, HeatCrossesWhileBondedAndNotOnceSeparated) {
+void expect_heat_while_bonded_only(bool tiebreak) {
+  const char* what = tiebreak ? "tiebreak" : "cohesive";
   test::DeckRun r;
-  run_deck(heated_bond_deck(), r);
+  run_deck(heated_bond_deck(tiebreak), r);
   ASSERT_FALSE(r.temperature.empty());
   const double c_slave = kRho * kC * 1.0 * 1.0 * 1.0, c_master = 2.0 * c_slave;
   const double tau = c_master * c_slave / (kH0 * 1.0 * (c_master + c_slave));  // slow seconds
@@ -76,7 +87,8 @@ TEST(ContactCohesiveHeat, HeatCrossesWhileBondedAndNotOnceSeparated) {
     const double slow = time * 1000.0;
     if (time <= 0.004 + 1e-9) {
       const double expected = (kHot - kCold) * std::exp(-slow / tau);
-      EXPECT_NEAR(lower - upper, expected, 0.01 * expected) << "bonded, t = " << slow << " s";
+      EXPECT_NEAR(lower - upper, expected, 0.01 * expected)
+          << what << ", bonded, t = " << slow << " s";
       worst = std::max(worst, std::abs(lower - upper - expected) / expected);
       at_separation = lower - upper;
     } else if (time >= 0.005 - 1e-9) {
@@ -84,13 +96,21 @@ TEST(ContactCohesiveHeat, HeatCrossesWhileBondedAndNotOnceSeparated) {
       // stays to round-off.
       if (apart < 0.0)
         apart = lower - upper;
-      EXPECT_GT(lower - upper, 0.5 * at_separation);
-      EXPECT_NEAR(lower - upper, apart, 1e-9 * kHot) << "separated, t = " << slow << " s";
+      EXPECT_GT(lower - upper, 0.5 * at_separation) << what;
+      EXPECT_NEAR(lower - upper, apart, 1e-9 * kHot) << what << ", separated, t = " << slow;
     }
   }
-  std::printf("cohesive interface heat: worst %.3f %% of the bonded decay, %.3f K left apart\n",
+  std::printf("%s interface heat: worst %.3f %% of the bonded decay, %.3f K left apart\n", what,
               100.0 * worst, at_separation);
-  EXPECT_GT(at_separation, 0.0);
+  EXPECT_GT(at_separation, 0.0) << what;
+}
+
+TEST(ContactCohesiveHeat, HeatCrossesWhileBondedAndNotOnceSeparated) {
+  expect_heat_while_bonded_only(false);
+}
+
+TEST(ContactCohesiveHeat, HeatCrossesATiebreakWhileTiedAndNotOnceItFailed) {
+  expect_heat_while_bonded_only(true);
 }
 
 }  // namespace
