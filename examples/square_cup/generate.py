@@ -337,6 +337,15 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     return "".join(k), params
 
 
+def write_deck(outdir, name, text, params):
+    """OUTDIR/NAME.k (the deck) and OUTDIR/NAME.json (the numbers the checks need)."""
+    os.makedirs(outdir, exist_ok=True)
+    with open(os.path.join(outdir, name + ".k"), "w") as f:
+        f.write(text)
+    with open(os.path.join(outdir, name + ".json"), "w") as f:
+        json.dump(params, f, indent=1)
+
+
 # The blank's shell formulation: 2 (Belytschko-Tsay, stiffness hourglass control) or 16 (fully
 # integrated, no hourglass control).
 ELFORM = 2
@@ -380,12 +389,7 @@ def main(argv):
     if ELFORM not in (2, 16):
         sys.exit("generate.py: --elform is 2 or 16")
     name = name or f"square_cup_{layers}"
-    os.makedirs(outdir, exist_ok=True)
-    text, params = deck(layers, n, depth, speed, dt2ms, core_n, end_time)
-    with open(os.path.join(outdir, name + ".k"), "w") as f:
-        f.write(text)
-    with open(os.path.join(outdir, name + ".json"), "w") as f:
-        json.dump(params, f, indent=1)
+    write_deck(outdir, name, *deck(layers, n, depth, speed, dt2ms, core_n, end_time))
 
 
 if __name__ == "__main__":

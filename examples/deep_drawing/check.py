@@ -1,0 +1,324 @@
+#!/usr/bin/env python3
+"""Checks a hot deep-drawing run against conservation and the example's stability criteria,
+reports its results and writes them to OUTDIR/results.json (plot.py and study.py read it).
+
+    /usr/bin/python3 check.py OUTDIR PARAMS.json
+
+Needs numpy and VTK (python3-vtk9) to read the VTU states. Criteria (each printed with its
+measured value; exit 1 when one fails):
+- the run ended normally (no inverted element, no instability: plyform stops on those);
+- energy: |kinetic + internal + hourglass + contact - external work| within 2 % of the final
+  external work at every output (the energy ratio within 1 +- 0.02);
+- internal energy positive at the end; at no output below -0.1 % of the external work (while
+  the blank cools on the tools, thermal contraction against the bonded layers and the tools
+  does negative stress work: the stress work counts the total strain);
+- hourglass energy below 5 % of the internal energy;
+- no contact gives the model energy: every contact's work above -0.1 % of the external work;
+- each interface's books (stored + damage + viscous + friction + damping) within 2 % of the
+  external work of its own work (README: what the books leave out where the core thickens);
+- the heat ledger closes: stored = the sum of the paths within 2 % of the largest path;
+- the layers stay in order: no core node beyond a skin's mid-surface in any state;
+- beta in [0, 1] on every skin node in every state;
+- beta = 1 in every state on the upper skin's nodes that start under the middle of the punch
+  face (within a quarter of the punch's width of the centre): the punch presses them onto
+  the core and the bottom hardly stretches, so there the layers neither open nor slide by
+  more than hundredths of a millimetre, below the law's g_c (0.05 mm in the melt with the
+  example's constants), and must stay bonded. (The lower skin there is free on its underside
+  and stretches plastically over the core's inextensible fibres: it slides, README.)
+"""
+
+import csv
+import json
+import math
+import os
+import sys
+from collections import defaultdict
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+PUNCH_HALF = 35.0
+DIE_EDGE = 37.235 + 8.0  # the die opening's half-width plus its shoulder radius
+
+
+def rows(path):
+    with open(path) as f:
+        return [{k: (float(v) if k != "state" else v) for k, v in r.items()}
+                for r in csv.DictReader(f)]
+
+
+def states(outdir):
+    """(time, file) of every VTU state, from results.pvd."""
+    out = []
+    with open(os.path.join(outdir, "results.pvd")) as f:
+        for line in f:
+            if "<DataSet" in line:
+                t = float(line.split('timestep="')[1].split('"')[0])
+                out.append((t, os.path.join(outdir, line.split('file="')[1].split('"')[0])))
+    return out
+
+
+def read_state(path, cells=False):
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    g = r.GetOutput()
+    point = {g.GetPointData().GetArrayName(k): vtk_to_numpy(g.GetPointData().GetArray(k))
+             for k in range(g.GetPointData().GetNumberOfArrays())}
+    cell = {g.GetCellData().GetArrayName(k): vtk_to_numpy(g.GetCellData().GetArray(k))
+            for k in range(g.GetCellData().GetNumberOfArrays())}
+    x = vtk_to_numpy(g.GetPoints().GetData())
+    if cells:
+        conn = vtk_to_numpy(g.GetCells().GetConnectivityArray()).reshape(-1, 4)
+        return x, point, cell, conn
+    return x, point, cell
+
+
+def crossings(x, ids, cells, cell_part, p, reach):
+    """Core nodes whose mid-surface lies beyond a skin's mid-surface: the layers' order
+    broken (a core node passed through a skin). For each core node, the nearest node of each
+    skin within `reach` sideways and the signed distance along that skin's normal there (the
+    mean of its elements' normals, which point from the lower layer to the upper)."""
+    part = part_of_node(ids)
+    core = np.where(part == p["core"])[0]
+    count = 0
+    for skin, sign in ((max(p["skins"]), 1.0), (min(p["skins"]), -1.0)):
+        quads = cells[cell_part == skin]
+        a, b = x[quads[:, 2]] - x[quads[:, 0]], x[quads[:, 3]] - x[quads[:, 1]]
+        n_cell = np.cross(a, b)
+        normal = np.zeros_like(x)
+        for k in range(4):
+            np.add.at(normal, quads[:, k], n_cell)
+        nodes = np.where(part == skin)[0]
+        nn = normal[nodes] / np.linalg.norm(normal[nodes], axis=1)[:, None]
+        for chunk in np.array_split(core, max(1, len(core) // 256)):
+            d = x[chunk][:, None, :] - x[nodes][None, :, :]
+            nearest = np.argmin(np.einsum("ijk,ijk->ij", d, d), axis=1)
+            rel = x[chunk] - x[nodes][nearest]
+            along = np.einsum("ij,ij->i", rel, nn[nearest])
+            side = np.linalg.norm(rel - along[:, None] * nn[nearest], axis=1)
+            count += int(np.sum((sign * along > 0.0) & (side < reach)))
+    return count
+
+
+def part_of_node(ids):
+    """Node ids are 100000 * part + k (generate.py)."""
+    return ids // 100000
+
+
+def choose_points(history, x0, p):
+    """The three interface points of the paper's fig. 12, chosen from the upper skin's history
+    nodes by what their beta did (the rule is printed with the choice):
+    - re-heals: the largest rise of beta after its lowest value, among nodes that fell below 0.5;
+    - stays bonded: the node farthest from the centre whose beta stayed 1 throughout;
+    - flange: the node on the x axis that ends nearest the middle of the flange."""
+    chosen = {}
+    best = (0.0, None)
+    for node, h in history.items():
+        b = [r["beta"] for r in h]
+        k = int(np.argmin(b))
+        if b[k] < 0.5 and max(b[k:]) - b[k] > best[0]:
+            best = (max(b[k:]) - b[k], node)
+    chosen["re-heals"] = best[1]
+    stay = [n for n, h in history.items() if min(r["beta"] for r in h) >= 1.0]
+    if stay:
+        chosen["stays bonded"] = max(stay, key=lambda n: math.hypot(*x0[n][:2]))
+    flange_mid = 0.5 * (DIE_EDGE + p["blank_half"] - 15.0)
+    axis = [n for n in p["axis"] if n in history and n in x0]
+    if axis:
+        chosen["flange"] = min(axis, key=lambda n: abs(x0[n][0] + history[n][-1].get("dx", 0.0)
+                                                       - flange_mid))
+    return chosen
+
+
+def main(outdir, params_path):
+    p = json.load(open(params_path))
+    summary = json.load(open(os.path.join(outdir, "summary.json")))
+    glstat = rows(os.path.join(outdir, "glstat.csv"))
+    books = defaultdict(list)
+    for r in rows(os.path.join(outdir, "interface_energy.csv")):
+        books[int(r["interface"])].append(r)
+    last = glstat[-1]
+    ext = last["external_work"]
+    failures = []
+    results = {"interface": p["interface"], "n": p["n"], "core_n": p["core_n"],
+               "full": p["full"]}
+
+    def report(name, ok, text):
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: {text}")
+        if not ok:
+            failures.append(name)
+
+    report("run", summary["status"] == "normal termination",
+           f"{summary['status']} at t = {summary['final_time']:.6g} s, {summary['cycles']} "
+           f"cycles, {summary['wall_seconds']:.0f} s wall on {summary['threads']} thread(s)")
+    worst = max(abs(r["kinetic"] + r["internal"] + r["hourglass"] + r["contact"] -
+                    r["external_work"]) for r in glstat)
+    report("energy balance", worst <= 0.02 * ext,
+           f"largest |total - external work| {worst:.4g} mJ = {100 * worst / ext:.3f} % of the "
+           f"external work {ext:.6g} mJ; energy ratio at the end {last['energy_ratio']:.5f}")
+    lowest = min(r["internal"] for r in glstat)
+    report("internal energy", last["internal"] > 0.0 and lowest >= -1e-3 * ext,
+           f"{last['internal']:.6g} mJ at the end; lowest {lowest:.4g} mJ "
+           f"({100 * lowest / ext:+.4f} % of the external work)")
+    final_internal = last["internal"]
+    share = [r["hourglass"] / r["internal"] for r in glstat
+             if r["internal"] >= 0.01 * final_internal and r["internal"] > 0.0]
+    report("hourglass", max(share) < 0.05,
+           f"{100 * last['hourglass'] / final_internal:.2f} % of the internal energy at the end, "
+           f"at most {100 * max(share):.2f} % once the internal energy passed 1 % of its final "
+           f"value")
+    for iface, hist in sorted(books.items()):
+        low = min(r["work"] for r in hist)
+        report(f"contact {iface} work", low >= -1e-3 * ext,
+               f"lowest {low:.4g} mJ ({100 * low / ext:+.4f} % of the external work), at the end "
+               f"{hist[-1]['work']:.6g} mJ")
+    results["interface_books"] = {}
+    for iface in p["interfaces"]:
+        h = books[iface][-1]
+        booked = h["stored"] + h["damage"] + h["viscous"] + h["friction"] + h["damping"]
+        report(f"interface {iface} books", abs(booked - h["work"]) <= 0.02 * ext,
+               f"work {h['work']:.5g} mJ, books {booked:.5g} mJ (stored {h['stored']:.4g}, "
+               f"damage {h['damage']:.4g}, friction {h['friction']:.4g}, damping "
+               f"{h['damping']:.4g}, healing {h['healing']:.4g}); difference "
+               f"{100 * abs(booked - h['work']) / ext:.3f} % of the external work")
+        results["interface_books"][iface] = {k: h[k] for k in (
+            "work", "stored", "damage", "viscous", "friction", "damping", "healing", "bonded")}
+
+    heat = rows(os.path.join(outdir, "heat.csv"))
+    paths = [k for k in heat[0] if k not in ("time", "stored")]
+    moved = max(max(abs(r[k]) for k in paths) for r in heat) or 1.0
+    gap = max(abs(r["stored"] - sum(r[k] for k in paths)) for r in heat)
+    hl = heat[-1]
+    report("heat ledger", gap <= 0.02 * moved,
+           f"|stored - sum of the paths| at most {gap:.4g} mJ = {100 * gap / moved:.2e} % of the "
+           f"largest path; at the end stored {hl['stored']:.5g} mJ = tools {hl['contact']:.5g} "
+           f"+ friction {hl['friction']:.5g} + plastic work {hl['plastic']:.5g} mJ")
+    results["heat"] = {k: hl[k] for k in hl}
+
+    # The VTU states: beta in [0, 1]; bonded in the middle of the punch face; the fields.
+    seq = states(outdir)
+    x_first, pd0, _ = read_state(seq[0][1])
+    ids = pd0["node_id"].astype(np.int64)
+    x0 = {int(n): x_first[i] for i, n in enumerate(ids)}
+    skins = np.isin(part_of_node(ids), p["skins"])
+    middle = (part_of_node(ids) == max(p["skins"])) & (
+        np.hypot(x_first[:, 0], x_first[:, 1]) < 0.5 * PUNCH_HALF)
+    cohesive = "beta" in pd0  # the tiebreak variant has no adhesion intensity
+    if cohesive:
+        bad_range, middle_low = 0, 1.0
+        for t, path in seq:
+            _, pd, _ = read_state(path)
+            beta = pd["beta"][skins]
+            beta = beta[np.isfinite(beta)]
+            bad_range += int(np.sum((beta < 0.0) | (beta > 1.0)))
+            bm = pd["beta"][middle]
+            if np.any(np.isfinite(bm)):
+                middle_low = min(middle_low, float(np.nanmin(bm)))
+        report("beta range", bad_range == 0,
+               f"{bad_range} values outside [0, 1] on the skins' nodes in {len(seq)} states")
+        report("bonded under the punch", middle_low >= 1.0,
+               f"lowest beta {middle_low:.6g} on the {int(np.sum(middle))} upper skin nodes that "
+               f"start within {0.5 * PUNCH_HALF:.1f} mm of the centre, over {len(seq)} states")
+    else:
+        print("     (tiebreak interfaces: no adhesion intensity beta to check)")
+    worst_cross = (0, 0.0)
+    reach = 0.5 * p["blank_half"] / p["n"]
+    for t, path in seq:
+        x, pd, cd, conn = read_state(path, cells=True)
+        c = crossings(x, pd["node_id"].astype(np.int64), conn, cd["part"].astype(np.int64), p,
+                      reach)
+        if c > worst_cross[0]:
+            worst_cross = (c, t)
+    report("layers in order", worst_cross[0] == 0,
+           f"at most {worst_cross[0]} core nodes beyond a skin's mid-surface (at t = "
+           f"{worst_cross[1]:.4g} s) over {len(seq)} states")
+    results["core_nodes_through_skins"] = worst_cross[0]
+    _, pe, ce = read_state(seq[-1][1])
+    node_part = part_of_node(pe["node_id"].astype(np.int64))
+    temp = pe["temperature"]
+    results["temperature_end"] = {str(pid): [float(np.nanmin(temp[node_part == pid])),
+                                             float(np.nanmax(temp[node_part == pid]))]
+                                  for pid in (1, 2, 3)}
+    cell_part = ce["part"].astype(np.int64)
+    plastic = ce["plastic_strain"]
+    results["plastic_strain_max"] = {str(pid): float(np.nanmax(plastic[cell_part == pid]))
+                                     for pid in p["skins"]}
+    if cohesive:
+        bonded = pe["beta"][np.isin(node_part, p["skins"])]
+        results["bonded_share_end"] = float(np.mean(bonded[np.isfinite(bonded)] > 0.5))
+    if "shear_angle" in ce:
+        results["shear_angle_max"] = float(np.nanmax(np.abs(ce["shear_angle"][cell_part == 2])))
+    th = ce["thickness"][cell_part == 2]
+    results["core_thickness"] = [float(np.nanmin(th)), float(np.nanmax(th))]
+    print(f"     temperatures at the end (C): " + ", ".join(
+        f"part {k} {v[0]:.1f}-{v[1]:.1f}" for k, v in results["temperature_end"].items()))
+    print(f"     skins' largest plastic strain: " + ", ".join(
+        f"part {k} {v:.3f}" for k, v in results["plastic_strain_max"].items()) +
+        f"; core thickness {th.min():.3f}-{th.max():.3f} mm, largest shear angle "
+        f"{results.get('shear_angle_max', float('nan')):.1f} degrees" +
+        (f"; {100 * results['bonded_share_end']:.1f} % of the skin nodes bonded (beta > 0.5)"
+         if cohesive else ""))
+
+    # Histories: punch force against stroke, draw-in and the layers' slip at the blank's edge.
+    nodes = defaultdict(list)
+    for r in rows(os.path.join(outdir, "nodout.csv")):
+        nodes[int(r["node"])].append(r)
+    punch = [r for r in rows(os.path.join(outdir, "rcforc.csv")) if int(r["interface"]) == 1]
+    body = [r for r in rows(os.path.join(outdir, "rbdout.csv")) if int(r["part"]) == 11]
+    z0 = body[0]["z"]
+    scale = 1.0 / p["model_fraction"]
+    ztime = [r["time"] for r in body]
+    zval = [z0 - r["z"] for r in body]
+    results["punch"] = [[float(np.interp(r["time"], ztime, zval)), -scale * r["fz"]] for r in punch]
+    peak = max(f for _, f in results["punch"])
+    half = p["blank_half"]
+    draw = []
+    for layer, (ex, ey, c) in enumerate(zip(p["edge_x"], p["edge_y"], p["corner"])):
+        ax, ay = nodes[ex][-1], nodes[ey][-1]
+        draw.append([half - ax["x"], half - ay["y"]])
+    results["draw_in"] = draw
+    ex = p["edge_x"]
+    results["slip_edge"] = [[r0["time"], r2["x"] - r1["x"], r0["x"] - r1["x"]]
+                            for r0, r1, r2 in zip(nodes[ex[0]], nodes[ex[1]], nodes[ex[2]])]
+    s_end = results["slip_edge"][-1]
+    print(f"     draw-in along x (lower skin, core, upper skin): "
+          + ", ".join(f"{d[0]:.2f}" for d in draw) + " mm; at the edge the core's end lies "
+          f"{s_end[1]:.2f} mm inside the upper skin's and {s_end[2]:.2f} mm inside the lower's")
+    print(f"     punch force (whole part) at most {peak / 1000:.2f} kN; stroke "
+          f"{zval[-1]:.2f} mm")
+
+    history = defaultdict(list)
+    cohesive_csv = os.path.join(outdir, "cohesive.csv")
+    for r in (rows(cohesive_csv) if os.path.exists(cohesive_csv) else []):
+        if int(r["interface"]) == p["interfaces"][0]:
+            history[int(r["node"])].append(r)
+    if history:
+        for n in history:
+            if n in nodes:
+                for r in history[n]:
+                    r["dx"] = nodes[n][-1]["x"] - x0[n][0]
+        chosen = choose_points(history, x0, p)
+        results["points"] = {}
+        for what, n in chosen.items():
+            if n is None:
+                print(f"     {what}: no history node qualifies")
+                continue
+            b = [r["beta"] for r in history[n]]
+            results["points"][what] = {"node": n, "x0": [float(v) for v in x0[n][:2]],
+                                       "time": [r["time"] for r in history[n]], "beta": b}
+            print(f"     point '{what}': node {n} starting at ({x0[n][0]:.1f}, {x0[n][1]:.1f}) "
+                  f"mm: beta lowest {min(b):.3f}, at the end {b[-1]:.3f}")
+    with open(os.path.join(outdir, "results.json"), "w") as f:
+        json.dump(results, f)
+    if failures:
+        print(f"{len(failures)} check(s) failed: {', '.join(failures)}")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    sys.exit(main(sys.argv[1], sys.argv[2]))
