@@ -71,7 +71,6 @@ STEEL_SIGY = (180.0, 172.0, 163.0, 152.0, 138.0)
 STEEL_ETAN = (800.0, 780.0, 750.0, 700.0, 640.0)
 STEEL = {"rho": 7.85e-9, "nu": 0.3, "c": 4.6e8, "k": 50.0}  # c: mm^2/(s^2 K); k: N/(s K)
 PLY_THERMAL = {"c": 1.2e9, "k": 2.0}  # carbon/PA6 ply: c 1200 J/(kg K), k about 2 W/(m K)
-TOOL = {"rho": 7.85e-9, "E": 210000.0, "nu": 0.3}
 
 # Temperatures (C) and heat transfer coefficients (t/(s^3 K) = 1000 W/(m^2 K)).
 T_BLANK, T_TOOL = 260.0, 80.0
@@ -174,7 +173,6 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="two-way", end_tim
             s["mesh"], _ = mirror_full(s["mesh"])
         tools = [mirror_full(t)[0] for t in tools]
     quarter = 0.25 if not full else 1.0
-    tool_titles = {11: "punch", 12: "die", 13: "blank holder"}
 
     k = ["*KEYWORD\n", "*TITLE\n",
          f"plyform hot deep drawing, steel / woven carbon-PA6 / steel, {interface} interfaces\n"]
@@ -216,11 +214,7 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="two-way", end_tim
     k += ["*MAT_THERMAL_ISOTROPIC_TITLE\nsteel\n", card(1, 0.0), card(STEEL["c"], STEEL["k"])]
     k += ["*MAT_THERMAL_ISOTROPIC_TITLE\ncarbon/PA6 ply\n", card(2, 0.0),
           card(PLY_THERMAL["c"], PLY_THERMAL["k"])]
-    for pid, con1 in ((11, 4), (12, 7), (13, 4)):
-        k += [f"*PART\n{tool_titles[pid]}\n", card(pid, 10, pid)]
-        k += [f"*MAT_RIGID_TITLE\n{tool_titles[pid]}\n",
-              card(pid, TOOL["rho"], TOOL["E"], TOOL["nu"]), card(1.0, con1, 7)]
-    k += ["*SECTION_SHELL\n", card(10, 2, 0.8333, 2), card(*([1.0] * 4))]
+    k += cup.tool_cards()
     k += ["*NODE\n"]
     meshes = [s["mesh"] for s in sheets] + tools
     for mesh in meshes:

@@ -236,7 +236,6 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     ns = 2 * max(8, round(n * 0.8))  # tool elements along a quarter contour
     tools = [punch(1100001, half, ns, depth + 5.0), die(1200001, -half, ns, depth),
              holder(1300001, half, ns)]
-    tool_titles = {11: "punch", 12: "die", 13: "blank holder"}
 
     k = ["*KEYWORD\n", "*TITLE\n", f"plyform square cup ({layers} layer{'s' if layers > 1 else ''},"
          f" {n} elements along the quarter's edge)\n"]
@@ -270,12 +269,7 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         ep = 2.0 * (i / 40) ** 2
         k.append(f"{ep:20.10g}{AL['K'] * (AL['eps0'] + ep) ** AL['n']:20.10g}\n")
     k += ["*MAT_ELASTIC_TITLE\ncore\n", card(2, CORE["rho"], CORE_E, CORE["nu"])]
-    # Tools: rigid; the die held, the punch and holder free along z only.
-    for pid, con1 in ((11, 4), (12, 7), (13, 4)):
-        k += [f"*PART\n{tool_titles[pid]}\n", card(pid, 10, pid)]
-        k += [f"*MAT_RIGID_TITLE\n{tool_titles[pid]}\n",
-              card(pid, TOOL["rho"], TOOL["E"], TOOL["nu"]), card(1.0, con1, 7)]
-    k += ["*SECTION_SHELL\n", card(10, 2, 0.8333, 2), card(*([1.0] * 4))]
+    k += tool_cards()
     k += ["*NODE\n"]
     for mesh in [s[6] for s in sheets] + tools:
         for nid, x, y, z in mesh.nodes:
@@ -335,6 +329,17 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         "interfaces": [4, 5] if layers == 3 else [],
     }
     return "".join(k), params
+
+
+def tool_cards():
+    """The rigid tools' parts, materials and section (the meshes are the tools' surfaces): the
+    die (12) held, the punch (11) and the blank holder (13) free along z only."""
+    k = []
+    for pid, title, con1 in ((11, "punch", 4), (12, "die", 7), (13, "blank holder", 4)):
+        k += [f"*PART\n{title}\n", card(pid, 10, pid)]
+        k += [f"*MAT_RIGID_TITLE\n{title}\n", card(pid, TOOL["rho"], TOOL["E"], TOOL["nu"]),
+              card(1.0, con1, 7)]
+    return k + ["*SECTION_SHELL\n", card(10, 2, 0.8333, 2), card(*([1.0] * 4))]
 
 
 def write_deck(outdir, name, text, params):
