@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build gfortran clang-format
+  build-essential cmake ninja-build ccache gfortran clang-format
   libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcli11-dev libeigen3-dev
   python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
 )
