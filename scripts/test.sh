@@ -1,21 +1,19 @@
 #!/usr/bin/env bash
-# Installs what is missing (apt-get), builds plyform and runs the whole test suite with ctest;
-# then builds it again with AddressSanitizer + UndefinedBehaviorSanitizer and runs the suite
-# under them. PLYFORM_SKIP_SANITIZE=1 skips the second pass.
+# The README's test command. Installs what is missing (apt-get), builds plyform (Release,
+# through ccache when it is installed) and runs every unit, verification and regression test
+# and the examples that take less than about a minute: everything but the `long` tier
+# (`ctest -LE long`). The long tier (the minutes-long examples and mesh studies) and the pass
+# under AddressSanitizer + UndefinedBehaviorSanitizer are scripts/test_full.sh; CI runs both
+# (.ci/run). Tiers and timings: docs/testing.md.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 jobs=$(nproc)
+start=$SECONDS
 
 bash scripts/install_deps.sh
 bash scripts/build.sh "$root/build"
-echo "== tests (Release) =="
-ctest --test-dir "$root/build" --output-on-failure --parallel "$jobs"
-
-if [[ "${PLYFORM_SKIP_SANITIZE:-0}" != 1 ]]; then
-  bash scripts/build.sh "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DPLYFORM_SANITIZE=ON -DPLYFORM_BUILD_BENCHMARKS=OFF
-  echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer) =="
-  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir "$root/build-sanitize" --output-on-failure --parallel "$jobs"
-fi
+echo "== tests (Release; every tier but long) =="
+ctest --test-dir "$root/build" --output-on-failure --parallel "$jobs" --label-exclude long
+echo "== test.sh: passed in $((SECONDS - start)) s. The long tier and the sanitizer pass:" \
+  "bash scripts/test_full.sh (or one tier: ctest --test-dir build -L long|unit|verification|regression|example)"

@@ -263,6 +263,17 @@ def main():
             problems.append(f"{name}: {value:.3g} > {tol:g} {detail}")
     if summary.get("status") != "normal termination":
         problems.append(f"the run did not end normally: {summary.get('status')}")
+    # The books judged by the run itself (docs/energy.md): released, the block has given its
+    # energy back, and the ratio measured against the most energy that entered stays 1 (the
+    # ratio of round-off over round-off read 1.045, and the hourglass book was compared with
+    # an internal energy near zero).
+    end_ratio = summary.get("energy_ratio", 0.0)
+    print(f"  {'ok ' if abs(end_ratio - 1.0) <= 0.01 else 'FAIL'} energy ratio at the end "
+          f"{end_ratio:.6f} (within 0.01), warnings: {len(summary.get('warnings', []))}")
+    if abs(end_ratio - 1.0) > 0.01:
+        problems.append(f"energy ratio at the end {end_ratio:.6f}, not within 1 +- 0.01")
+    for warning in summary.get("warnings", []):
+        problems.append(f"the run warned: {warning}")
     print(f"Figures: {os.path.join(out, 'solid_block_energies.png')}, "
           f"{os.path.join(out, 'solid_block_response.png')}")
     if problems:

@@ -51,6 +51,8 @@ class StopOnSignals {
   void (*term_)(int) = SIG_DFL;
 };
 
+constexpr const char* untrusted_status = "completed, results not to be trusted";
+
 bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
   for (const auto& d : errors)
     fmt::print(err, "error: {}\n", d.to_string());
@@ -138,7 +140,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   summary.status = !result.ok       ? "error: " + result.error
                    : result.stopped ? fmt::format("stopped by a signal at t = {:.6g}", result.time)
-                                    : "normal termination";
+                   : !result.distrust.empty() ? std::string(untrusted_status)
+                                              : "normal termination";
+  for (const engine::Distrust& d : result.distrust)
+    summary.distrust.push_back({d.reason, d.time});
   if (result.restarted)
     summary.restarted_at = result.restart_time;
   summary.checkpoint = result.checkpoint;
@@ -217,6 +222,12 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (!result.ok) {
     fmt::print(err, "error: {}\n", result.error);
     return 3;
+  }
+  if (!result.distrust.empty() && !result.stopped) {
+    fmt::print(err, "{}: its books broke ({}):\n", untrusted_status, outdir.string());
+    for (const engine::Distrust& d : result.distrust)
+      fmt::print(err, "  from t = {:.6g}: {}\n", d.time, d.reason);
+    return 5;
   }
   if (result.stopped) {
     fmt::print(err,

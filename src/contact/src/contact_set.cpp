@@ -1148,6 +1148,10 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       pr.resultant = {0.0, 0.0, 0.0};
       pr.master_resultant = {0.0, 0.0, 0.0};
       std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
+      // An interface that is not there does not set the step; it searches (and votes) anew
+      // once it is.
+      pr.dt_vote = kInf;
+      pr.searched = false;
       continue;
     }
     if (cp.offsets_follow_thickness && !shell_thickness_.empty())

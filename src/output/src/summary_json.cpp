@@ -157,13 +157,27 @@ std::string summary_json_text(const RunSummary& s) {
   real("heat_entered", s.heat_entered);
   key("warnings");
   if (s.warnings.empty()) {
-    out += "[]\n";
+    out += "[],\n";
   } else {
     out += "[\n";
     for (std::size_t i = 0; i < s.warnings.size(); ++i) {
       out += "    ";
       out += json_string(s.warnings[i]);
       out += i + 1 < s.warnings.size() ? ",\n" : "\n";
+    }
+    out += "  ],\n";
+  }
+  key("distrust");
+  if (s.distrust.empty()) {
+    out += "[]\n";
+  } else {
+    out += "[\n";
+    for (std::size_t i = 0; i < s.distrust.size(); ++i) {
+      out += "    {\"reason\": ";
+      out += json_string(s.distrust[i].reason);
+      out += ", \"time\": ";
+      append_number(out, s.distrust[i].time);
+      out += i + 1 < s.distrust.size() ? "},\n" : "}\n";
     }
     out += "  ]\n";
   }

@@ -1,5 +1,6 @@
 #include "plyform/setup/build.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -498,6 +499,7 @@ struct Builder {
       m.controls.end_time = d.termination->end_time;
       m.controls.end_cycle = d.termination->end_cycle;
       m.controls.dt_min_ratio = d.termination->dtmin;
+      m.controls.energy_change_limit = 0.01 * std::max(0.0, d.termination->endeng);  // percent
     } else {
       error({d.files_read.empty() ? std::string() : d.files_read.front(), 0},
             "*CONTROL_TERMINATION", "ENDTIM",

@@ -29,7 +29,8 @@ constexpr std::array kTerminationFields{
     FieldSpec{.name = "ENDENG",
               .type = FieldType::kReal,
               .unit = "-",
-              .description = "energy change limit; kept as written"},
+              .description = "percent change of the energy ratio that stops the run (0: plyform's "
+                             "band, 50 %)"},
     FieldSpec{.name = "ENDMAS",
               .type = FieldType::kReal,
               .unit = "-",

@@ -55,7 +55,8 @@ struct RunOptions {
 /// `plyform run DECK.k [-o OUTDIR] [--threads N] [--restart] [--end-time T]`: 0 normal
 /// termination, 1 deck errors or a checkpoint refused (--restart), 2 output errors, 3 the run
 /// stopped (instability) with the results written so far, 4 stopped by SIGINT or SIGTERM
-/// after writing a checkpoint (continue with --restart).
+/// after writing a checkpoint (continue with --restart), 5 completed with books that broke
+/// (results not to be trusted: docs/energy.md).
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 /// `plyform check DECK.k`

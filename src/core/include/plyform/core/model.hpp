@@ -163,8 +163,11 @@ struct Controls {
   double end_time = 0.0;    ///< *CONTROL_TERMINATION ENDTIM
   long end_cycle = 0;       ///< ENDCYC (0: none)
   double dt_min_ratio = 0;  ///< DTMIN: stop when dt < DTMIN * dt0 (0: default 1e-3... see engine)
-  double tssfac = 0.9;      ///< *CONTROL_TIMESTEP
-  double dt2ms = 0.0;       ///< > 0: mass scaling to reach dt = |DT2MS| * TSSFAC
+  /// ENDENG as a fraction: the run stops once its energy ratio leaves 1 +- this (0: the
+  /// engine's default band, `docs/energy.md`).
+  double energy_change_limit = 0.0;
+  double tssfac = 0.9;  ///< *CONTROL_TIMESTEP
+  double dt2ms = 0.0;   ///< > 0: mass scaling to reach dt = |DT2MS| * TSSFAC
   double dt_init = 0.0;
   bool hourglass_energy = true;  ///< *CONTROL_ENERGY HGEN
 };

@@ -33,7 +33,18 @@ struct Energies {
   double contact = 0.0;        ///< energy taken by the contact interfaces (stored and dissipated)
   double external_work = 0.0;  ///< loads and reactions of constraints and prescribed motions
   double total = 0.0;          ///< kinetic + internal + hourglass + contact
-  double ratio = 1.0;          ///< total / (initial total + external work)
+  /// 1 + (total - (initial total + external work)) / scale, the scale being the largest
+  /// initial total + external work of the run so far: LS-DYNA's total / (initial total +
+  /// external work) while the energy that entered grows, and still the books' error as a share
+  /// of the energy the model held once that energy has been taken back out (docs/energy.md).
+  double ratio = 1.0;
+};
+
+/// Why a run's results are not to be trusted although it reached its end: a broken book
+/// (docs/energy.md), with the time it first held.
+struct Distrust {
+  std::string reason;
+  double time = 0.0;
 };
 
 /// One part's books at an output time (matsum.csv): the stress work and hourglass energy of
@@ -130,6 +141,9 @@ struct RunResult {
   double physical_mass = 0.0;
   Energies last;
   std::vector<std::string> warnings;
+  /// The books that broke (each once, at the first time it held): a run that reached its end
+  /// with any is "completed, results not to be trusted" (plyform run exits 5).
+  std::vector<Distrust> distrust;
   long contact_searches = 0;  ///< full contact searches (bucket sorts) done
   /// Times the run dropped to one thread because its cores were shared (thread_governor.hpp),
   /// and the wall seconds it ran so.

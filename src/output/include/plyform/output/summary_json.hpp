@@ -11,17 +11,19 @@ namespace plyform::output {
 
 /// What a run reports at its end. Doubles that are not finite are written as null.
 struct RunSummary {
-  std::string status = "normal termination";  ///< "normal termination" or "error: <message>"
-  std::string deck;                           ///< deck path as given on the command line
-  std::string version;                        ///< plyform version
-  long cycles = 0;                            ///< time steps taken
-  double final_time = 0.0;                    ///< simulated time reached (model time unit)
-  double end_time = 0.0;                      ///< termination time of the deck (model time unit)
-  double wall_seconds = 0.0;                  ///< wall-clock time of the time loop (s)
-  double element_cycles_per_second = 0.0;     ///< elements x cycles / wall_seconds (1/s)
-  double energy_ratio = 0.0;      ///< total / (initial total + external work) at the end
-  double dt_initial = 0.0;        ///< first time step (model time unit)
-  double dt_final = 0.0;          ///< last time step (model time unit)
+  /// "normal termination", "completed, results not to be trusted" (the run reached its end
+  /// with books that broke: `distrust`), "stopped by a signal at t = ..." or "error: <message>"
+  std::string status = "normal termination";
+  std::string deck;                        ///< deck path as given on the command line
+  std::string version;                     ///< plyform version
+  long cycles = 0;                         ///< time steps taken
+  double final_time = 0.0;                 ///< simulated time reached (model time unit)
+  double end_time = 0.0;                   ///< termination time of the deck (model time unit)
+  double wall_seconds = 0.0;               ///< wall-clock time of the time loop (s)
+  double element_cycles_per_second = 0.0;  ///< elements x cycles / wall_seconds (1/s)
+  double energy_ratio = 0.0;               ///< total / (initial total + external work) at the end
+  double dt_initial = 0.0;                 ///< first time step (model time unit)
+  double dt_final = 0.0;                   ///< last time step (model time unit)
   double added_mass = 0.0;        ///< mass added by mass scaling at the end (model mass unit)
   double added_mass_ratio = 0.0;  ///< added_mass / physical mass (dimensionless)
   long nodes = 0;
@@ -39,6 +41,13 @@ struct RunSummary {
   double heat_stored = 0.0;
   double heat_entered = 0.0;
   std::vector<std::string> warnings;
+  /// The books that broke, each with the time it first held (written as
+  /// `"distrust": [{"reason": ..., "time": ...}]`).
+  struct Distrust {
+    std::string reason;
+    double time = 0.0;
+  };
+  std::vector<Distrust> distrust;
 };
 
 /// The JSON text of a summary (an object, two-space indentation, ending with a newline).

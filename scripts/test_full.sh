@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# What scripts/test.sh leaves out (CI runs both, .ci/run): the `long` tier in the Release build
+# (the examples and mesh studies that run for minutes), then a second build with
+# AddressSanitizer + UndefinedBehaviorSanitizer (RelWithDebInfo, without benchmarks and
+# examples) running the unit, verification and regression tests under them.
+# PLYFORM_SKIP_SANITIZE=1 skips the sanitizer pass. Tiers and timings: docs/testing.md.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+jobs=$(nproc)
+start=$SECONDS
+
+bash scripts/install_deps.sh
+bash scripts/build.sh "$root/build"
+echo "== tests (Release; the long tier) =="
+ctest --test-dir "$root/build" --output-on-failure --parallel "$jobs" --label-regex long
+
+if [[ "${PLYFORM_SKIP_SANITIZE:-0}" != 1 ]]; then
+  bash scripts/build.sh "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DPLYFORM_SANITIZE=ON -DPLYFORM_BUILD_BENCHMARKS=OFF -DPLYFORM_BUILD_EXAMPLES=OFF
+  echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer) =="
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --test-dir "$root/build-sanitize" --output-on-failure --parallel "$jobs" \
+    --label-exclude long
+fi
+echo "== test_full.sh: passed in $((SECONDS - start)) s"
