@@ -1315,7 +1315,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     std::swap(pr.prev_force, pr.force);
     std::swap(pr.prev_rs, pr.rs);
     // `shape` then holds older values: measure() rewrites it for every located node, and
-    // only located nodes read it.
+    // only located nodes read it. Until the next apply(), the projection on pr.seg[k] is in
+    // prev_shape (what the heat between cycles reads: located_shape()).
     std::swap(pr.prev_shape, pr.shape);
   }
 }
@@ -1377,6 +1378,22 @@ void ContactSet::cohesive_results(std::vector<SlaveNodeResult>& out) const {
   }
 }
 
+namespace {
+
+// The shape functions of slave k's projection on its segment pr.seg[k], as the heat reads
+// them: the engine takes a thermal step between cycles, after the elements and before the
+// contact (Simulation::State::cycle_once), so the last projection is that of the last
+// apply(), which swapped it into prev_shape at the end of the pass (the arrays are swapped
+// for the next cycle's warm start and first half of the work). Before the first apply() of a
+// pass (the thermal step of the first cycle, a thermal-only run, a pass not yet born) the
+// projection is start()'s, which measures without swapping: in shape. `measured` is set by
+// apply() only, in the same pass as the swap, and is in the checkpoint with both arrays.
+const double* located_shape(const PassRuntime& pr, std::size_t k) {
+  return pr.measured ? &pr.prev_shape[4 * k] : &pr.shape[4 * k];
+}
+
+}  // namespace
+
 void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatLink>& out) const {
   out.clear();
   // A face's area vector: half the cross product of its diagonals (a triangle, N3 = N4,
@@ -1411,9 +1428,10 @@ void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatL
         continue;
       core::ContactHeatLink l;
       l.slave = pr.pass->slave_nodes[k];
+      const double* w = located_shape(pr, k);
       for (std::size_t j = 0; j < 4; ++j) {
         l.master[j] = pr.pass->segments[4 * static_cast<std::size_t>(sg) + j];
-        l.weight[j] = pr.shape[4 * k + j];
+        l.weight[j] = w[j];
       }
       // The area the node presents to its segment: its share of each face around it,
       // projected on the segment's plane (a solid's side faces, at right angles to the
@@ -1462,9 +1480,10 @@ void ContactSet::take_friction_heat(std::vector<double>& energy) {
       energy[static_cast<std::size_t>(pr.pass->slave_nodes[k])] += slave_part * d;
       if (sg < 0)
         continue;
+      const double* w = located_shape(pr, k);
       for (std::size_t j = 0; j < 4; ++j)
         energy[static_cast<std::size_t>(pr.pass->segments[4 * static_cast<std::size_t>(sg) + j])] +=
-            (1.0 - slave_part) * d * pr.shape[4 * k + j];
+            (1.0 - slave_part) * d * w[j];
     }
   }
 }

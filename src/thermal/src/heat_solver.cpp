@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <sstream>
 #include <string>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include "plyform/core/invariant.hpp"
 #include "plyform/thermal/element_conductance.hpp"
 
 namespace plyform::thermal {
@@ -28,6 +31,36 @@ double curve_or_constant(const core::Model& m, Index curve, double mult, double 
 bool is_triangle(const Index* c) {
   return c[3] == c[2];
 }
+
+// A time in a message, to 6 significant digits (as the engine prints it): std::to_string's
+// fixed 6 decimals print 0.000000 at explicit time scales.
+std::string time_text(double t) {
+  std::ostringstream os;
+  os.precision(6);
+  os << t;
+  return os.str();
+}
+
+// A contact link's part of the step: the flux into the slave q = hA (sum w_j T_j - T_s) =
+// -hA sum_i a_i T_i with a = (1, -w_1 .. -w_4).
+struct LinkTerm {
+  std::array<Index, 5> node;     // slave, masters
+  std::array<Index, 5> unknown;  // theirs (-1: a node that does not conduct)
+  std::array<double, 5> a;
+  double ha;
+  bool one_way;
+};
+
+// A prescribed temperature of the step: its change, its row's right-hand side and diagonal
+// before it was held, and its column's off-diagonal entries (row, value), entries
+// [column_begin, column_end) of the step's held_column.
+struct Held {
+  std::size_t unknown;
+  double change;
+  double b;
+  double diagonal;
+  std::size_t column_begin, column_end;
+};
 
 // Calls f(thermal material, nodes, corners, volume, thick) for every element of a part that
 // conducts, on the reference geometry: a hexahedron's 8 nodes and volume, a shell's 4 (a
@@ -79,9 +112,13 @@ struct HeatSolver::Matrices {
                            Eigen::DiagonalPreconditioner<double>>
       iterative;
   bool analysed = false;
-  // Scratch of one step.
+  // Scratch of one step, sized once and reused (a thermal step may come every cycle).
   Eigen::VectorXd t, kt, b, dt, guess;
   std::vector<double> s_conv, h_conv, s_rad, h_rad, s_flux, s_gen;
+  std::vector<LinkTerm> terms;
+  std::vector<Held> held;
+  std::vector<std::pair<int, double>> held_column;
+  std::vector<char> is_held;  // per unknown, while a step has prescribed temperatures
 
   // The position of entry (row, col) in the values (-1: not in the pattern).
   [[nodiscard]] int entry(const SparseMatrix& m, int row, int col) const {
@@ -395,7 +432,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
 
   for (std::size_t i = 0; i < u; ++i)
     m.t[static_cast<Eigen::Index>(i)] = temperature_[i];
-  m.kt = scale * (m.K * m.t);
+  m.kt.noalias() = scale * (m.K * m.t);
 
   // Faces: convection, radiation (linearized about T_n) and flux, lumped on the nodes.
   for (auto* v : {&m.s_conv, &m.h_conv, &m.s_rad, &m.h_rad, &m.s_flux, &m.s_gen})
@@ -477,8 +514,10 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
                                         mech / h - m.kt[static_cast<Eigen::Index>(i)];
   }
 
-  // A = C / h + theta (TSF K + H).
-  m.A = m.K;  // same pattern
+  // A = C / h + theta (TSF K + H). A has K's pattern (build_pattern() gives it that pattern,
+  // and nothing removes an entry): the values are copied, nothing is allocated.
+  PLYFORM_INVARIANT(m.A.nonZeros() == m.K.nonZeros() && m.A.isCompressed(), "A has K's pattern");
+  std::copy_n(m.K.valuePtr(), m.K.nonZeros(), m.A.valuePtr());
   double* a = m.A.valuePtr();
   const double ks = theta * scale;
   for (Eigen::Index k = 0; k < m.A.nonZeros(); ++k)
@@ -490,19 +529,12 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   // (a = 1, -w_1 .. -w_4) adds hA a_i a_j to the conducting rows and columns (symmetric, rows
   // summing to 0); a node that does not conduct (a tool), and the master of a one-way link,
   // keeps its temperature: its part moves to the right-hand side.
-  struct LinkTerm {
-    std::array<Index, 5> node;     // slave, masters
-    std::array<Index, 5> unknown;  // theirs (-1: a node that does not conduct)
-    std::array<double, 5> a;
-    double ha;
-    bool one_way;
-  };
   // A link member's temperature: its unknown's, else (a tool) its node's.
   const auto t_at = [&](Index un, Index node) {
     return un >= 0 ? temperature_[idx(un)] : temperature[idx(node)];
   };
-  std::vector<LinkTerm> terms;
-  terms.reserve(links.size());
+  std::vector<LinkTerm>& terms = m.terms;
+  terms.clear();
   for (std::size_t li = 0; li < links.size(); ++li) {
     const core::ContactHeatLink& l = links[li];
     const std::array<Index, 5>& lu = link_unknowns_[li];
@@ -547,14 +579,10 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   // Prescribed temperatures: their change is known; their columns move to the right-hand
   // side (the matrix stays symmetric), and what holding them takes is the residual of their
   // rows in the full system.
-  struct Held {
-    std::size_t unknown;
-    double change;
-    double b;
-    double diagonal;
-    std::vector<std::pair<int, double>> column;
-  };
-  std::vector<Held> held;
+  std::vector<Held>& held = m.held;
+  std::vector<std::pair<int, double>>& held_column = m.held_column;
+  held.clear();
+  held_column.clear();
   for (const auto& [un, hi] : prescribed_) {
     const core::TemperatureHistory& th = model_.temperature_histories[hi];
     if (t1 < th.birth || t1 > th.death)
@@ -564,16 +592,22 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
            curve_or_constant(model_, th.curve, th.scale, t1) - temperature_[q],
            m.b[static_cast<Eigen::Index>(q)],
            a[m.diagonal[q]],
-           {}};
+           held_column.size(),
+           0};
     const int col = static_cast<int>(q);
     for (int k = m.A.outerIndexPtr()[col]; k < m.A.outerIndexPtr()[col + 1]; ++k)
       if (m.A.innerIndexPtr()[k] != col)
-        x.column.push_back({m.A.innerIndexPtr()[k], a[k]});
-    held.push_back(std::move(x));
+        held_column.emplace_back(m.A.innerIndexPtr()[k], a[k]);
+    x.column_end = held_column.size();
+    held.push_back(x);
   }
+  const auto column_of = [&](const Held& x) {
+    return std::span<const std::pair<int, double>>(held_column.data() + x.column_begin,
+                                                   x.column_end - x.column_begin);
+  };
   for (const Held& x : held) {
     const int col = static_cast<int>(x.unknown);
-    for (const auto& [row, v] : x.column) {
+    for (const auto& [row, v] : column_of(x)) {
       m.b[row] -= v * x.change;
       a[m.entry(m.A, row, col)] = 0.0;
       a[m.entry(m.A, col, row)] = 0.0;
@@ -597,8 +631,10 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
       m.guess[static_cast<Eigen::Index>(i)] = change_[i] * grow;
     for (const Held& x : held)
       m.guess[static_cast<Eigen::Index>(x.unknown)] = x.change;
-    m.dt = bnorm > 0.0 ? Eigen::VectorXd(m.iterative.solveWithGuess(m.b, m.guess))
-                       : Eigen::VectorXd::Zero(static_cast<Eigen::Index>(u));
+    if (bnorm > 0.0)
+      m.dt = m.iterative.solveWithGuess(m.b, m.guess);
+    else
+      m.dt.setZero(static_cast<Eigen::Index>(u));
     rep.iterations = static_cast<int>(m.iterative.iterations());
     rep.converged = bnorm == 0.0 || m.iterative.info() == Eigen::Success;
     iterations_ += rep.iterations;
@@ -610,7 +646,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     m.direct.factorize(m.A);
     if (m.direct.info() != Eigen::Success) {
       rep.ok = false;
-      rep.error = "the thermal matrix is not positive definite at t = " + std::to_string(t1) +
+      rep.error = "the thermal matrix is not positive definite at t = " + time_text(t1) +
                   " (a part with no capacity, or a negative conductivity)";
       return rep;
     }
@@ -624,7 +660,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     if (!std::isfinite(d)) {
       rep.ok = false;
       rep.error = "non-finite temperature at node " +
-                  std::to_string(model_.node_id[idx(nodes_[i])]) + " at t = " + std::to_string(t1);
+                  std::to_string(model_.node_id[idx(nodes_[i])]) + " at t = " + time_text(t1);
       return rep;
     }
     step.convection += h * (m.s_conv[i] - m.h_conv[i] * d);
@@ -634,7 +670,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   }
   for (const Held& x : held) {
     double r = x.diagonal * x.change - x.b;
-    for (const auto& [row, v] : x.column)
+    for (const auto& [row, v] : column_of(x))
       r += v * m.dt[row];
     step.prescribed += h * r;
   }
@@ -673,9 +709,12 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
                    std::abs(step.convection) + std::abs(step.radiation) + std::abs(step.flux) +
                    std::abs(step.generation) + std::abs(step.prescribed);
 
-  std::vector<char> is_held(held.empty() ? 0 : u, 0);
-  for (const Held& x : held)
-    is_held[x.unknown] = 1;
+  std::vector<char>& is_held = m.is_held;
+  if (!held.empty()) {
+    is_held.assign(u, 0);  // no allocation once sized
+    for (const Held& x : held)
+      is_held[x.unknown] = 1;
+  }
   double stored = 0.0;
   for (std::size_t i = 0; i < u; ++i) {
     const double d = m.dt[static_cast<Eigen::Index>(i)];
