@@ -81,5 +81,38 @@ TEST(RunSummary, CountsShellsAndRatesTheDeformableElements) {
       << json;
 }
 
+// The run's thread count (summary.json "threads"): the deck's *CONTROL_PARALLEL NCPU (its
+// magnitude: a negative one asks for consistency, which plyform always has) when --threads is
+// not given, --threads when it is, 1 when neither says.
+double threads_of_run(const std::string& deck_text, int threads) {
+  test::TempDir dir;
+  RunOptions o;
+  o.deck = dir.write("threads.k", deck_text);
+  o.output = dir.path() / "out";
+  o.progress = false;
+  o.threads = threads;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_deck(o, out, err), 0) << err.str();
+  std::ifstream in(*o.output / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return number(json, "threads");
+}
+
+std::string with_parallel_card(const std::string& card) {
+  std::string text = kDeck;
+  text.insert(text.find("*PART"), "*CONTROL_PARALLEL\n" + card + "\n");
+  return text;
+}
+
+TEST(RunSummary, ThreadsFromTheDeckWhenTheCommandLineGivesNone) {
+  EXPECT_EQ(threads_of_run(with_parallel_card("         2"), 0), 2.0);
+  EXPECT_EQ(threads_of_run(with_parallel_card("        -2         0         1"), 0), 2.0);
+  EXPECT_EQ(threads_of_run(kDeck, 0), 1.0);
+}
+
+TEST(RunSummary, CommandLineThreadsWinOverTheDeck) {
+  EXPECT_EQ(threads_of_run(with_parallel_card("         2"), 1), 1.0);
+}
+
 }  // namespace
 }  // namespace plyform::app

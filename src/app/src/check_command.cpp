@@ -14,8 +14,7 @@
 #include <variant>
 
 #include "plyform/app/commands.hpp"
-#include "plyform/element/shell_kernels.hpp"
-#include "plyform/element/solid_kernels.hpp"
+#include "plyform/engine/initial_step.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/law/user_constants.hpp"
 #include "plyform/material/law_registry.hpp"
@@ -178,6 +177,51 @@ void print_woven_ply(const core::ReinforcedThermoplastic& m, std::ostream& out) 
   }
 }
 
+// "N (Belytschko-Tsay; T triangles)": the formulations of the shells, with their counts when
+// the deck mixes them.
+std::string shell_summary(const core::Model& m) {
+  std::size_t bt = 0, full = 0, triangles = 0;
+  for (const auto& b : m.shell_blocks) {
+    (b.formulation == core::ShellFormulation::fully_integrated ? full : bt) += b.size();
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      if (b.connectivity[4 * e + 2] == b.connectivity[4 * e + 3])
+        ++triangles;
+    }
+  }
+  constexpr const char* kBt = "Belytschko-Tsay";
+  constexpr const char* kFull = "ELFORM 16 fully integrated";
+  const std::string kinds = full == 0 ? std::string(kBt)
+                            : bt == 0 ? std::string(kFull)
+                                      : fmt::format("{}: {}, {}: {}", kBt, bt, kFull, full);
+  return fmt::format("{} ({}; {} triangles)", bt + full, kinds, triangles);
+}
+
+// The step the run starts with and the cycles it takes to the end time, mass scaling applied
+// as the run applies it (engine::initial_stable_step), and the mass it adds.
+void print_stable_step(const core::Model& m, std::ostream& out) {
+  const engine::InitialStep step = engine::initial_stable_step(m);
+  if (!(step.dt < 1e300))
+    return;
+  const double tssfac = m.controls.tssfac;
+  const double dt = tssfac * step.dt;
+  fmt::print(out,
+             "stable time step estimate: {:.6g} (TSSFAC {:g}, set by element {}{}), about {:.6g} "
+             "cycles\n",
+             dt, tssfac, step.element, step.scaled_elements > 0 ? ", mass scaled" : "",
+             m.controls.end_time / dt);
+  if (m.controls.dt2ms != 0.0) {
+    const double share = step.physical_mass > 0.0 ? step.added_mass / step.physical_mass : 0.0;
+    fmt::print(out,
+               "mass scaling (DT2MS {:g}): {} element{} below the step {:.6g} made heavier, "
+               "adding {:.6g} ({:.3g} % of the mass {:.6g}); without it the step would be "
+               "{:.6g} (element {}), about {:.6g} cycles\n",
+               m.controls.dt2ms, step.scaled_elements, step.scaled_elements == 1 ? "" : "s",
+               tssfac * std::abs(m.controls.dt2ms), step.added_mass, 100.0 * share,
+               step.physical_mass, tssfac * step.dt_unscaled, step.element_unscaled,
+               m.controls.end_time / (tssfac * step.dt_unscaled));
+  }
+}
+
 // Counts, parts and the stable step of a deck with a mesh; false (errors printed) when the
 // runtime model cannot be built.
 void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream& out) {
@@ -200,26 +244,26 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                "objective; INN {}: {}\n",
                desc.accuracy->osu, inn, frame);
   }
+  if (desc.parallel) {
+    // A negative NCPU asks LS-DYNA for consistency; plyform's results never depend on the
+    // thread count, so there is nothing to warn about, only to say.
+    const model::ControlParallelDesc& p = *desc.parallel;
+    fmt::print(out,
+               "threads (*CONTROL_PARALLEL NCPU {}): {} for `plyform run` without --threads{}\n",
+               p.ncpu, p.threads(),
+               p.ncpu < 0 || p.consistency == 1
+                   ? "; the consistency it asks for is always met: plyform's results do not "
+                     "depend on the thread count"
+                   : "");
+  }
   std::size_t one = 0, two = 0;
   for (const auto& b : m.solid_blocks) {
     (b.formulation == core::SolidFormulation::one_point ? one : two) += b.size();
   }
   fmt::print(out, "nodes: {}\n", m.node_count());
   fmt::print(out, "solid elements: {} (ELFORM 1: {}, ELFORM 2: {})\n", one + two, one, two);
-  std::size_t shells = 0, triangles = 0;
-  for (const auto& b : m.shell_blocks) {
-    shells += b.size();
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      if (b.connectivity[4 * e + 2] == b.connectivity[4 * e + 3])
-        ++triangles;
-    }
-  }
-  fmt::print(out, "shell elements: {} (Belytschko-Tsay; {} triangles)\n", shells, triangles);
+  fmt::print(out, "shell elements: {}\n", shell_summary(m));
   fmt::print(out, "parts: {}\n", m.parts.size());
-  double dt_min = 1e300;
-  core::GlobalId dt_element = 0;
-  const element::NodalView view{m.x0.data(), m.y0.data(), m.z0.data(), m.x0.data(), m.y0.data(),
-                                m.z0.data(), m.x0.data(), m.y0.data(), m.z0.data()};
   for (const auto& b : m.solid_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
     const std::string_view law = material_name(mat);
@@ -227,15 +271,6 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
     fmt::print(out, "  part {} '{}': {} elements, ELFORM {}, {}, hourglass IHQ {} QM {:g}{}\n",
                part.id, part.title, b.size(), static_cast<int>(b.formulation), law, b.hourglass.ihq,
                b.hourglass.qm, expansion_text(b.expansion));
-    if (std::holds_alternative<core::RigidMaterial>(mat))
-      continue;  // moves as a body
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const double dt = element::solid_stable_dt(b, mat, view, e);
-      if (dt < dt_min) {
-        dt_min = dt;
-        dt_element = b.element_id[e];
-      }
-    }
   }
   for (const auto& b : m.shell_blocks) {
     const core::Material& mat = m.materials[static_cast<std::size_t>(b.material)];
@@ -247,15 +282,6 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                b.nip, material_name(mat), expansion_text(b.expansion));
     if (const auto* ply = std::get_if<core::ReinforcedThermoplastic>(&mat))
       print_woven_ply(*ply, out);
-    if (std::holds_alternative<core::RigidMaterial>(mat))
-      continue;
-    for (std::size_t e = 0; e < b.size(); ++e) {
-      const double dt = element::shell_stable_dt(b, mat, view, e);
-      if (dt < dt_min) {
-        dt_min = dt;
-        dt_element = b.element_id[e];
-      }
-    }
   }
   fmt::print(out, "constraints: {} fixed nodes/dofs, {} prescribed motions, {} nodal loads\n",
              m.fixed.size(), m.motions.size(), m.loads.size());
@@ -358,13 +384,7 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                shell_rows == 1 ? "" : "s", solid_count, solid_count == 1 ? "" : "s",
                shell_rows + solid_count, shell_rows + solid_count == 1 ? "" : "s");
   }
-  if (dt_min < 1e300) {
-    const double dt = m.controls.tssfac * dt_min;
-    fmt::print(out,
-               "stable time step estimate: {:.6g} (TSSFAC {:g}, set by element {}), about "
-               "{:.3g} cycles\n",
-               dt, m.controls.tssfac, dt_element, m.controls.end_time / dt);
-  }
+  print_stable_step(m, out);
 }
 
 }  // namespace

@@ -17,7 +17,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("DECK", run.deck, "keyword deck (.k)")->required();
   auto* run_out =
       run_cmd->add_option("-o,--output", run_output, "results folder (default: <deck stem>_out)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads")->check(CLI::Range(1, 1024));
+  run_cmd
+      ->add_option("--threads", run.threads,
+                   "OpenMP threads (default: the deck's *CONTROL_PARALLEL NCPU, else 1)")
+      ->check(CLI::Range(1, 1024));
   run_cmd->add_flag("--restart", run.restart,
                     "continue from the checkpoint in OUTDIR (OUTDIR/d3dump: "
                     "*DATABASE_BINARY_D3DUMP, or written when a run was stopped by a signal)");

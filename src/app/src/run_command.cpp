@@ -61,8 +61,9 @@ bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
 
 }  // namespace
 
-int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
-  const keyword::ReadResult read = keyword::read_deck(options.deck);
+int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
+  const keyword::ReadResult read = keyword::read_deck(given.deck);
+  const RunOptions options = with_deck_threads(given, read.model);  // --threads, else NCPU
   for (const auto& w : read.warnings)
     fmt::print(err, "warning: {}\n", w.to_string());
   if (report(read.errors, err) || report(setup::validate(read.model), err))

@@ -54,6 +54,37 @@ std::string range_problem(const FieldSpec& spec, double value) {
                      spec.max_exclusive ? "<" : "<=", format_number(*spec.max_value, spec.type));
 }
 
+/// A real with a point or an exponent letter; "1+2", Fortran's 1e2 without its letter, is not
+/// taken for an integer.
+bool written_as_real(std::string_view text) {
+  return text.find_first_of(".eEdD") != std::string_view::npos;
+}
+
+/// The number of an integer field's text, or what is wrong with it. Digits are read as they
+/// are; a real written with a point or an exponent ("0.0", "3.", "2.0E+00", "2.0D+00") is read
+/// as the integer it equals, as LS-DYNA does (decks written by other tools put reals in integer
+/// fields), and refused when it is not a whole number. The int range is checked by the caller.
+std::variant<double, std::string> integer_number(std::string_view text) {
+  if (const std::optional<long long> parsed = parse_integer(text)) {
+    if (*parsed < INT_MIN || *parsed > INT_MAX) {
+      return fmt::format("value {} does not fit a 32-bit integer", *parsed);
+    }
+    return static_cast<double>(*parsed);
+  }
+  const std::string_view digits = text.substr(text[0] == '-' || text[0] == '+' ? 1 : 0);
+  if (!digits.empty() && std::all_of(digits.begin(), digits.end(), is_digit)) {
+    return fmt::format("value {} does not fit a 32-bit integer", text);  // beyond 64 bits
+  }
+  const std::optional<double> real = parse_real(text);
+  if (!real || !written_as_real(text)) {
+    return fmt::format("expected an integer, got '{}'", text);
+  }
+  if (*real != std::trunc(*real)) {
+    return fmt::format("expected an integer, got '{}', which is not a whole number", text);
+  }
+  return *real + 0.0;  // -0.0 reads as 0
+}
+
 /// Column where the first field taking the rest of the line starts (npos if none).
 std::size_t rest_of_line_column(const CardSpec& card) {
   std::size_t column = 0;
@@ -165,15 +196,11 @@ std::variant<FieldValue, FieldError> convert_field(const FieldSpec& spec, std::s
                          fmt::format("parameter &{} = {} is not an integer", name, number));
     }
   } else if (spec.type == FieldType::kInteger) {
-    const std::optional<long long> parsed = parse_integer(text);
-    if (!parsed) {
-      return field_error(display_name, fmt::format("expected an integer, got '{}'", text));
+    auto read = integer_number(text);
+    if (auto* message = std::get_if<std::string>(&read)) {
+      return field_error(display_name, std::move(*message));
     }
-    if (*parsed < INT_MIN || *parsed > INT_MAX) {
-      return field_error(display_name,
-                         fmt::format("value {} does not fit a 32-bit integer", *parsed));
-    }
-    number = static_cast<double>(*parsed);
+    number = std::get<double>(read);
   } else {
     const std::optional<double> parsed = parse_real(text);
     if (!parsed) {

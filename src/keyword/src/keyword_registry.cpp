@@ -103,6 +103,7 @@ KeywordSpec control_bulk_viscosity_keyword();
 KeywordSpec control_adaptive_keyword();
 KeywordSpec control_adapstep_keyword();
 KeywordSpec control_solid_keyword();
+KeywordSpec control_parallel_keyword();
 KeywordSpec interface_springback_lsdyna_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
@@ -199,6 +200,7 @@ std::span<const KeywordSpec> keyword_registry() {
       control_adaptive_keyword(),
       control_adapstep_keyword(),
       control_solid_keyword(),
+      control_parallel_keyword(),
       interface_springback_lsdyna_keyword(),
       control_output_keyword(),
       control_rigid_keyword(),

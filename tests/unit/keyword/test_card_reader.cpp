@@ -1,4 +1,5 @@
 #include <array>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -123,11 +124,90 @@ TEST(CardReader, BadNumbers) {
   EXPECT_EQ(e.message, "expected a real number, got 'abc'");
   e = read_error(kCard, "       2.5");
   EXPECT_EQ(e.field, "N");
-  EXPECT_EQ(e.message, "expected an integer, got '2.5'");
+  EXPECT_EQ(e.message, "expected an integer, got '2.5', which is not a whole number");
+  e = read_error(kCard, "       abc");
+  EXPECT_EQ(e.message, "expected an integer, got 'abc'");
   e = read_error(kCard, "3, 1.2.3");
   EXPECT_EQ(e.field, "X");
   e = read_error(kCard, "99999999999,");
   EXPECT_EQ(e.message, "value 99999999999 does not fit a 32-bit integer");
+}
+
+// LS-DYNA reads a real with a whole value in an integer field as that integer (decks written by
+// other tools have TGRLC 0.0, NIP 3., ...), in fixed and free format, and D exponents too.
+constexpr std::array kIntegerFields{
+    FieldSpec{.name = "I", .type = FieldType::kInteger},
+    FieldSpec{.name = "J", .type = FieldType::kInteger},
+};
+constexpr CardSpec kIntegerCard{.title = "integers", .fields = kIntegerFields};
+
+int integer_of(std::string_view line, const char* field = "I") {
+  return read_ok(kIntegerCard, line).integer(field);
+}
+
+TEST(CardReader, IntegralRealInIntegerFieldIsThatInteger) {
+  EXPECT_EQ(integer_of("       0.0"), 0);
+  EXPECT_EQ(integer_of("0.0,"), 0);
+}
+
+TEST(CardReader, IntegralRealWithTrailingPoint) {
+  EXPECT_EQ(integer_of("        3."), 3);
+  EXPECT_EQ(integer_of("3.,"), 3);
+}
+
+TEST(CardReader, IntegralRealWithExponent) {
+  EXPECT_EQ(integer_of("   2.0E+00"), 2);
+  EXPECT_EQ(integer_of(" 2.0e+00,1.5e1"), 2);
+  EXPECT_EQ(integer_of(" 2.0e+00,1.5e1", "J"), 15);
+  EXPECT_EQ(integer_of("     1.E3"), 1000);
+}
+
+TEST(CardReader, IntegralRealWithFortranDExponent) {
+  EXPECT_EQ(integer_of("   2.0D+00"), 2);
+  EXPECT_EQ(integer_of("2.0d+00,"), 2);
+}
+
+TEST(CardReader, NegativeIntegralReal) {
+  EXPECT_EQ(integer_of("      -1.0"), -1);
+  EXPECT_EQ(integer_of(",-1.0", "J"), -1);
+  const CardValues v = read_ok(kIntegerCard, "      -0.0");
+  EXPECT_EQ(v.integer("I"), 0);
+  EXPECT_FALSE(std::signbit(v.real("I")));  // read as the integer 0
+}
+
+TEST(CardReader, IntegralRealStillMeetsTheFieldsRange) {
+  const CardValues v = read_ok(kCard, "      10.0");
+  EXPECT_EQ(v.integer("N"), 10);
+  EXPECT_EQ(read_error(kCard, "      11.0").message,
+            "value 11 is out of range: must be in [0, 10]");
+}
+
+TEST(CardReader, NonIntegralRealInIntegerFieldIsAnError) {
+  for (const char* line : {"       2.5", "2.5,", "   2.5E+00", "  2.5D+00", "    0.1E-0"}) {
+    const FieldError e = read_error(kIntegerCard, line);
+    EXPECT_EQ(e.field, "I") << line;
+    EXPECT_NE(e.message.find("which is not a whole number"), std::string::npos)
+        << line << ": " << e.message;
+  }
+  EXPECT_EQ(read_error(kIntegerCard, "      -2.5").message,
+            "expected an integer, got '-2.5', which is not a whole number");
+}
+
+TEST(CardReader, IntegralRealOutOfIntRangeIsAnError) {
+  EXPECT_EQ(read_error(kIntegerCard, "   3.0E+10").message,
+            "value 30000000000 does not fit a 32-bit integer");
+  EXPECT_EQ(read_error(kIntegerCard, "-3.0D+10,").message,
+            "value -30000000000 does not fit a 32-bit integer");
+  EXPECT_EQ(read_error(kIntegerCard, "99999999999999999999999,").message,
+            "value 99999999999999999999999 does not fit a 32-bit integer");
+  EXPECT_EQ(integer_of("2147483647.0,"), 2147483647);
+  EXPECT_EQ(integer_of("-2.147483648E9,"), -2147483647 - 1);
+}
+
+TEST(CardReader, OnlyRealsWithAPointOrExponentLetterCountAsIntegers) {
+  // Fortran's exponent without its letter ("1+2" = 100) is not taken for an integer.
+  EXPECT_EQ(read_error(kIntegerCard, "       1+2").message, "expected an integer, got '1+2'");
+  EXPECT_EQ(read_error(kIntegerCard, "         .").message, "expected an integer, got '.'");
 }
 
 TEST(CardReader, RangeIsChecked) {

@@ -260,6 +260,20 @@ TEST(MatThermalIsotropic, EveryFieldWithTitle) {
   EXPECT_EQ(m[1].where.line, 8);
 }
 
+// Decks written by other tools put TGRLC as a real: LS-DYNA reads 0.0 as 0 (no curve).
+TEST(MatThermalIsotropic, TgrlcWrittenAsARealIsItsInteger) {
+  const ReadResult r =
+      read_ok("*MAT_THERMAL_ISOTROPIC\n" + fixed({"1", "7850.0", "0.0", "0.0", "0.0", "0.0"}) +
+              fixed({"460.0", "45.0"}) + "*MAT_THERMAL_ISOTROPIC\n2,0.,3.,1.5\n500,50\n");
+  const auto& m = r.model.thermal_materials;
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].tgrlc, 0);
+  EXPECT_EQ(m[1].tgrlc, 3);
+  EXPECT_DOUBLE_EQ(m[1].tgmult, 1.5);
+  expect_error("*MAT_THERMAL_ISOTROPIC\n1,0,0.5\n500,50\n", 2, "*MAT_THERMAL_ISOTROPIC", "TGRLC",
+               "expected an integer, got '0.5', which is not a whole number");
+}
+
 TEST(MatThermalIsotropic, Rejections) {
   constexpr std::string_view kKw = "*MAT_THERMAL_ISOTROPIC";
   expect_error("*MAT_THERMAL_ISOTROPIC\n,7800\n500,50\n", 2, kKw, "TMID", "required");

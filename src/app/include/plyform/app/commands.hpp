@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace plyform::model {
+struct ModelDesc;
+}
+
 namespace plyform::app {
 
 struct LawOptions {
@@ -46,9 +50,9 @@ int run_fit(const FitOptions& options, std::ostream& out, std::ostream& err);
 struct RunOptions {
   std::filesystem::path deck;
   std::optional<std::filesystem::path> output;  ///< none: <deck stem>_out in the current folder
-  int threads = 1;
-  bool progress = true;            ///< a progress line when standard output is a terminal
-  bool restart = false;            ///< continue from OUTDIR/d3dump
+  int threads = 0;       ///< --threads; 0 (not given): the deck's *CONTROL_PARALLEL NCPU, else 1
+  bool progress = true;  ///< a progress line when standard output is a terminal
+  bool restart = false;  ///< continue from OUTDIR/d3dump
   std::optional<double> end_time;  ///< replaces the deck's ENDTIM
 };
 
@@ -58,6 +62,11 @@ struct RunOptions {
 /// after writing a checkpoint (continue with --restart), 5 completed with books that broke
 /// (results not to be trusted: docs/energy.md).
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+/// `options` with the run's thread count: --threads when given, else the magnitude of the
+/// deck's *CONTROL_PARALLEL NCPU (a negative one asks LS-DYNA for consistency, which plyform
+/// always has), else 1.
+RunOptions with_deck_threads(RunOptions options, const model::ModelDesc& deck);
 
 /// `plyform check DECK.k`
 int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err);

@@ -80,6 +80,20 @@ struct ControlShellDesc {
   SourceLocation where;
 };
 
+/// *CONTROL_PARALLEL: LS-DYNA's shared-memory run settings. `plyform run` takes |NCPU| as its
+/// thread count when --threads is not given. A negative NCPU (and CONST 1) ask LS-DYNA for
+/// results that do not depend on the thread count: plyform's never do, whatever the card says.
+struct ControlParallelDesc {
+  int ncpu = 1;          ///< NCPU: threads (negative: with consistency); 0 reads as LS-DYNA's 1
+  int numrhs = 0;        ///< NUMRHS: 0 a right-hand side per CPU, 1 one, as written
+  int consistency = 2;   ///< CONST: 1 consistent summation on, 2 off (LS-DYNA's default)
+  int para = 0;          ///< PARA: parallel force assembly with CONST 1 (0 off, 1-2 on)
+  SourceLocation where;  ///< the card line
+
+  /// The thread count the card asks for: |NCPU|, at least 1.
+  int threads() const { return ncpu == 0 ? 1 : (ncpu < 0 ? -ncpu : ncpu); }
+};
+
 /// *CONTROL_UNITS: names of the deck's units, kept as text (no conversion).
 struct ControlUnitsDesc {
   std::string length;  ///< LENGTH ("m", "mm", ...)

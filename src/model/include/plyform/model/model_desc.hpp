@@ -105,6 +105,7 @@ struct ModelDesc {
   std::optional<ControlUnitsDesc> units;
   std::optional<ControlAccuracyDesc> accuracy;
   std::optional<ControlBulkViscosityDesc> bulk_viscosity;
+  std::optional<ControlParallelDesc> parallel;  ///< *CONTROL_PARALLEL: `plyform run`'s threads
   std::optional<DatabaseBinaryD3plotDesc> d3plot;
   std::optional<DatabaseBinaryD3dumpDesc> d3dump;
   std::vector<DatabaseAsciiDesc> ascii_outputs;  ///< *DATABASE_GLSTAT, _NODOUT, _RCFORC
