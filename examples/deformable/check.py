@@ -17,7 +17,9 @@ into DIR:
 References (README.md): the tensile peak of the pressure at both points is the deck's
 sigma_max (the RCCM law's closed form for an opening at a rate far below the law's viscous
 scale, Lambda = eta v / (omega g_c) << 1), within 5 %; each point is compressed while the tool
-is above it before it is pulled open; beta stays in [0, 1]; the energy books close (glstat ratio
+is above it before it is pulled open (the largest pressure before its tensile peak: after it the
+freed flap may strike the plate, a transient of the coarse, undamped model that round-off sizes,
+README), and carries no tension once freed (beta 0); beta stays in [0, 1]; the energy books close (glstat ratio
 within 1 +- 0.02, internal energy positive, hourglass energy below 5 % of it, the contact's work
 never negative); the interface's damage energy is omega = sigma_max^2 / C_N times the area it
 lost (5 %). Needs /usr/bin/python3 (numpy, matplotlib, python3-vtk9).
