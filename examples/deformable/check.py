@@ -17,7 +17,9 @@ into DIR:
 References (README.md): the tensile peak of the pressure at both points is the deck's
 sigma_max (the RCCM law's closed form for an opening at a rate far below the law's viscous
 scale, Lambda = eta v / (omega g_c) << 1), within 5 %; each point is compressed while the tool
-is above it before it is pulled open; beta stays in [0, 1]; the energy books close (glstat ratio
+is above it before it is pulled open (the largest pressure before its tensile peak: after it the
+freed flap may strike the plate, a transient of the coarse, undamped model that round-off sizes,
+README), and carries no tension once freed (beta 0); beta stays in [0, 1]; the energy books close (glstat ratio
 within 1 +- 0.02, internal energy positive, hourglass energy below 5 % of it, the contact's work
 never negative); the interface's damage energy is omega = sigma_max^2 / C_N times the area it
 lost (5 %). Needs /usr/bin/python3 (numpy, matplotlib, python3-vtk9).
@@ -112,11 +114,33 @@ def main(argv):
         err = abs(peak - smax) / smax
         report(err <= 0.05, f"point x = {x_point:g} mm: tensile peak {peak:.4f} MPa at "
                f"t = {t[i_t]:.4f} s against sigma_max {smax:g} ({100 * err:.2f} %, limit 5 %)")
+        # Compression under the tool: the largest pressure before the tensile peak, while the
+        # point is still bonded. After the peak the point is free and its pressure is not the
+        # interface's but that of whatever strikes the plate: each node row of the peel front lets
+        # go at once (the cohesive zone, E omega / sigma_max^2 = 0.24 mm, is shorter than an
+        # element), the stored energy rings the freed flap, which nothing damps, and a freed node
+        # may slap back onto the plate for a step or two. That strike's penalty pressure is set by
+        # the step's phase, the penalty and round-off (0 to 1.7 MPa between processors, README),
+        # so it is reported, not checked; what the law fixes after release is no tension.
+        i_c = int(np.argmax(pr[:i_t + 1]))
         x_tool = float(np.interp(t[i_c], tt, tx))
-        good = pr[i_c] > smax and t[i_c] < t[i_t] and abs(x_tool - x_point) < p["radius"]
+        good = pr[i_c] > smax and abs(x_tool - x_point) < p["radius"]
         report(good, f"point x = {x_point:g} mm: compressed first, {pr[i_c]:.3f} MPa at "
                f"t = {t[i_c]:.4f} s with the tool's axis at x = {x_tool:.2f} mm (within its "
                f"radius {p['radius']:g} mm), before the tension")
+        freed = np.nonzero(beta <= 0.0)[0]
+        if len(freed):
+            i_f = int(freed[0])
+            after = pr[i_f:]
+            report(after.min() >= 0.0, f"point x = {x_point:g} mm: no tension once freed "
+                   f"(beta 0 from t = {t[i_f]:.4f} s): lowest pressure {after.min():.3g} MPa")
+        if i_t + 1 < len(pr):
+            i_s = i_t + 1 + int(np.argmax(pr[i_t + 1:]))
+            if pr[i_s] > 0.0:
+                x_s = float(np.interp(t[i_s], tt, tx))
+                print(f"       (not checked: after the tension the freed point struck the plate "
+                      f"with {pr[i_s]:.3f} MPa at t = {t[i_s]:.4f} s, the tool's axis at "
+                      f"x = {x_s:.2f} mm: a transient of the undamped flap, see the README)")
         report(beta.min() >= 0.0 and beta.max() <= 1.0,
                f"point x = {x_point:g} mm: beta in [0, 1] (from {beta.max():.4g} to "
                f"{beta.min():.4g}); separated behind the tool: beta {beta[-1]:.3g} at the end")
