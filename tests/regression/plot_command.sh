@@ -13,7 +13,15 @@ repo="$(cd "${here}/../.." && pwd)"
 rm -rf "${work}"
 mkdir -p "${work}"
 python3 "${repo}/examples/solid_block/generate.py" "${work}" --elements 2 >/dev/null
-"${plyform}" run "${work}/solid_block.k" -o "${work}/out" </dev/null >/dev/null
+# Eight one-point hexahedra compressed at once ring their hourglass modes (18 % of the largest
+# internal energy): the run completes with its results not to be trusted (exit 5), and its
+# files are what `plyform plot` draws all the same.
+status=0
+"${plyform}" run "${work}/solid_block.k" -o "${work}/out" </dev/null >/dev/null 2>&1 || status=$?
+if [[ ${status} != 0 && ${status} != 5 ]]; then
+  echo "plot_command.sh: FAIL: plyform run exited ${status}" >&2
+  exit 1
+fi
 "${plyform}" plot "${work}/out"
 
 for png in energies.png nodout.png; do

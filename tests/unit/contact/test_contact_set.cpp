@@ -256,3 +256,21 @@ TEST(ContactSet, StickSlipTurnsWithTheSurface) {
 }
 
 }  // namespace
+
+// An interface past its death time (or before its birth) sets no step: its vote was kept from
+// its last active cycle and went on limiting the run's step.
+TEST(ContactSet, AnInterfaceOutsideItsBirthAndDeathVotesNoStep) {
+  Scene s(0.0, 0.0, 2e-3, 800.0, 500.0, 1, 0.2);
+  s.model.contacts.front().death = 1.5 * kDt;
+  const int threads0 = omp_get_max_threads();
+  omp_set_num_threads(1);
+  contact::ContactSet cs(s.model, s.mass, nullptr, 1e-4, 0.9);
+  cs.start(s.packed.data());
+  cs.apply(kDt, kDt, s.packed.data(), nullptr, s.fx.data(), s.fy.data(), s.fz.data());
+  const double alive = cs.stable_step();
+  EXPECT_TRUE(std::isfinite(alive));
+  EXPECT_GT(alive, 0.0);
+  cs.apply(2.0 * kDt, kDt, s.packed.data(), nullptr, s.fx.data(), s.fy.data(), s.fz.data());
+  EXPECT_TRUE(std::isinf(cs.stable_step())) << cs.stable_step();
+  omp_set_num_threads(threads0);
+}

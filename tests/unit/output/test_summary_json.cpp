@@ -288,7 +288,8 @@ TEST(SummaryJson, ExpectedText) {
   "warnings": [
     "line one\nline \"two\"",
     "tab\there, back\\slash, bell\u0007"
-  ]
+  ],
+  "distrust": []
 }
 )";
   EXPECT_EQ(summary_json_text(example_summary()), expected);
@@ -319,7 +320,22 @@ TEST(SummaryJson, ErrorStatusNonFiniteNumbersAndNoWarnings) {
   EXPECT_TRUE(std::holds_alternative<std::nullptr_t>(member(doc, "energy_ratio").value));
   EXPECT_TRUE(std::holds_alternative<std::nullptr_t>(member(doc, "wall_seconds").value));
   EXPECT_TRUE(std::get<JsonArray>(member(doc, "warnings").value).empty());
-  EXPECT_NE(text.find("\"warnings\": []\n"), std::string::npos);
+  EXPECT_NE(text.find("\"warnings\": [],\n"), std::string::npos);
+}
+
+TEST(SummaryJson, DistrustedBooksWithTheirTimes) {
+  RunSummary s;
+  s.status = "completed, results not to be trusted";
+  s.distrust = {{"hourglass energy 19 % of the largest internal energy", 4.7e-4},
+                {"contact 3 energy -2 \"negative\"", 1e-3}};
+  const Json doc = JsonParser(summary_json_text(s)).parse_document();
+  EXPECT_EQ(std::get<std::string>(member(doc, "status").value), s.status);
+  const auto& d = std::get<JsonArray>(member(doc, "distrust").value);
+  ASSERT_EQ(d.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(std::get<std::string>(member(d[k], "reason").value), s.distrust[k].reason);
+    EXPECT_EQ(std::get<double>(member(d[k], "time").value), s.distrust[k].time);
+  }
 }
 
 TEST(SummaryJson, Utf8KeptAndInvalidBytesReplaced) {

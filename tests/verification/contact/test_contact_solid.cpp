@@ -58,10 +58,16 @@ TEST(ContactSolid, BlockUnderPressureTransmitsTheLoad) {
 // contact carries the load, the slice does not fall through) and Coulomb (mu times the normal
 // force). Before, the nodes took the side faces (gap 0 however deep they went) and the upper
 // slice fell through the lower one.
+// Known defect (docs/energy.md, issue 29's interfaces): once the upper slice slides (from about
+// 1.9 ms), the contact gives the model energy (contact energy -0.6 against 0.02 that entered,
+// nodes of the lower slice at metres per second, one-point or selective reduced hexahedra
+// alike), and the run's energy ratio leaves its stop band. ENDENG keeps it running to the end
+// here, so that the geometry and the forces are still checked, and the run must say that its
+// books broke; when the defect is fixed that check fails: remove it and the ENDENG.
 TEST(ContactSolid, SliceOnASliceTakesTheTopFaceAtTheEdgesAndSlides) {
   const double end = 3e-3, load = 8.0;
   test::DeckWriter d;
-  d.kw("*CONTROL_TERMINATION").card(end);
+  d.kw("*CONTROL_TERMINATION").card(end, 0, 0.0, 1.0e30);
   d.kw("*DATABASE_GLSTAT").card(end / 300);
   d.kw("*DATABASE_RCFORC").card(end / 300);
   d.kw("*DATABASE_NODOUT").card(end / 300);
@@ -110,6 +116,9 @@ TEST(ContactSolid, SliceOnASliceTakesTheTopFaceAtTheEdgesAndSlides) {
   std::printf("slice on slice: normal force %.4f of the load, mu %.4f, deepest node %.2e mm\n",
               fz / n / load, -fx / fz,
               -*std::min_element(r.uz.back().second.begin(), r.uz.back().second.end()));
+  ASSERT_FALSE(r.result.distrust.empty()) << "the known defect above is gone: update this test";
+  std::printf("its books (known defect): from t = %.4g: %s\n", r.result.distrust.front().time,
+              r.result.distrust.front().reason.c_str());
 }
 
 // A rigid plate (a tool mesh: *MAT_RIGID shells, not offset in a non-automatic contact) pressed
