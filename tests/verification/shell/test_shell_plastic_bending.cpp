@@ -20,9 +20,9 @@
 // advised for slow loading): on the plateau the strip has no bending stiffness left, and a
 // one-element-wide strip of one-point elements under viscous control (IHQ 1), which resists
 // rates only, folds into its hourglass modes over the slow load (the moment falls to zero).
-// The curvature here is a uniform one, not a hinge: what this checks is the element's
-// integration of plastic bending, which the 3-point bend of docs/shells.md rules out as the
-// cause of its work deficit.
+// The curvature here is a uniform one, not a hinge: this checks the element's integration of
+// plastic bending, and so rules it out as the cause of BT's lower work in the 3-point bend of
+// docs/shells.md.
 //
 // Tolerances: 3 % of M_p against the closed form (the curvature from three node columns and
 // the lever arm from the present positions, with the inertia of a load that is slow but not
