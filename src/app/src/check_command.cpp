@@ -21,6 +21,7 @@
 #include "plyform/setup/build.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
+#include "plyform/setup/hinge_resolution.hpp"
 #include "plyform/setup/validate.hpp"
 
 namespace plyform::app {
@@ -435,6 +436,9 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
     print_law(m, u, out);
   if (built)
     print_mesh(m, *built->model, out);
+  for (const setup::HingeAdvice& a :
+       built ? setup::hinge_resolution_advice(*built->model) : std::vector<setup::HingeAdvice>{})
+    fmt::print(out, "advice: {}\n", a.message);
   return 0;
 }
 
