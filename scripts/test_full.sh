@@ -2,7 +2,8 @@
 # What scripts/test.sh leaves out (CI runs both, .ci/run): the `long` tier in the Release build
 # (the examples and mesh studies that run for minutes), then a second build with
 # AddressSanitizer + UndefinedBehaviorSanitizer (RelWithDebInfo, without benchmarks and
-# examples) running the unit, verification and regression tests under them.
+# examples) running the unit and verification tests under them (the regression tier drives the
+# same code through the command line, decks and files).
 # PLYFORM_SKIP_SANITIZE=1 skips the sanitizer pass. Tiers and timings: docs/testing.md.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,6 +22,6 @@ if [[ "${PLYFORM_SKIP_SANITIZE:-0}" != 1 ]]; then
   echo "== tests (AddressSanitizer + UndefinedBehaviorSanitizer) =="
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir "$root/build-sanitize" --output-on-failure --parallel "$jobs" \
-    --label-exclude long
+    --label-regex 'unit|verification' --label-exclude long
 fi
 echo "== test_full.sh: passed in $((SECONDS - start)) s"
