@@ -692,7 +692,10 @@ Snapshot Simulation::State::snapshot() const {
 void Simulation::State::fail(const std::string& why) {
   res.ok = false;
   res.error = why;
-  sink.state(snapshot());  // keep the last state for the diagnosis
+  // Keep the last state for the diagnosis, unless this cycle's outputs wrote it already (the
+  // books' check follows them): a second state at one time would break the series.
+  if (!(state_written && written_at == t))
+    sink.state(snapshot());
 }
 
 // The node arrays that only outputs read are brought up to date on demand: positions
