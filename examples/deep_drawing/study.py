@@ -3,7 +3,7 @@
 changed, run one after the other, each checked (check.py), the punch forces and the beta maps
 side by side, and a table of the results.
 
-    /usr/bin/python3 study.py PLYFORM OUTDIR --study NAME [--n N] [--threads T]
+    /usr/bin/python3 study.py PLYFORM OUTDIR --study NAME [--n N] [--threads T] [--reuse DIR]
 
 NAME:
   interface    the interlayer coupling: two-way (the cohesive contacts and a plain contact of
@@ -17,6 +17,11 @@ NAME:
                mesh's wherever that exceeds a quarter of its peak (the draw proper, past the
                first bending over the tools' radii), and within 10 % of its peak everywhere
                (exit 1 when not)
+
+--reuse DIR: a finished run of the first variant's deck (run.sh's OUTDIR, e.g. the ctest
+example.deep_drawing's): when DIR holds deep_drawing.k identical to the deck this study
+generates for its first variant and that run's summary.json, the study checks and uses that run
+instead of running the same deck again (the mesh study in the suite saves its coarse run).
 
 Writes OUTDIR/study_NAME_forces.png (with the curves of the first variant), OUTDIR/
 study_NAME_maps.png and OUTDIR/study_NAME.md. Needs numpy, matplotlib and VTK.
@@ -41,14 +46,30 @@ STUDIES = {
 }
 
 
-def run_variant(plyform, outdir, name, options, threads):
+def finished_run(reuse, deck):
+    """The run directory in `reuse` (run.sh's OUTDIR) of the same deck, or None."""
+    if not reuse:
+        return None
+    done, run_dir = os.path.join(reuse, "deep_drawing.k"), os.path.join(reuse, "deep_drawing")
+    if not (os.path.isfile(done) and os.path.isfile(os.path.join(run_dir, "summary.json"))):
+        return None
+    with open(done) as a, open(deck) as b:
+        return run_dir if a.read() == b.read() else None
+
+
+def run_variant(plyform, outdir, name, options, threads, reuse=None):
     gen = [sys.executable, os.path.join(HERE, "generate.py"), outdir, "--name", name] + options
     subprocess.run(gen, check=True)
-    run_dir = os.path.join(outdir, name)
-    print(f"study.py: {name}: plyform run ({' '.join(options)})", flush=True)
-    subprocess.run([plyform, "run", os.path.join(outdir, name + ".k"), "-o", run_dir,
-                    "--threads", str(threads)], check=True, stdout=subprocess.DEVNULL,
-                   stdin=subprocess.DEVNULL)
+    run_dir = finished_run(reuse, os.path.join(outdir, name + ".k"))
+    if run_dir:
+        print(f"study.py: {name}: the same deck's run in {run_dir} ({' '.join(options)})",
+              flush=True)
+    else:
+        run_dir = os.path.join(outdir, name)
+        print(f"study.py: {name}: plyform run ({' '.join(options)})", flush=True)
+        subprocess.run([plyform, "run", os.path.join(outdir, name + ".k"), "-o", run_dir,
+                        "--threads", str(threads)], check=True, stdout=subprocess.DEVNULL,
+                       stdin=subprocess.DEVNULL)
     checked = subprocess.run([sys.executable, os.path.join(HERE, "check.py"), run_dir,
                               os.path.join(outdir, name + ".json")], capture_output=True,
                              text=True)
@@ -72,6 +93,7 @@ def main():
     a.add_argument("--study", required=True, choices=sorted(STUDIES) + ["mesh"])
     a.add_argument("--n", type=int, default=COARSE_N)
     a.add_argument("--threads", type=int, default=2)
+    a.add_argument("--reuse", default=None)
     args = a.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
     if args.study == "mesh":
@@ -82,7 +104,8 @@ def main():
     runs, table, status = [], [], 0
     for k, (label, opts) in enumerate(variants):
         name = f"{args.study}_{k}"
-        run_dir, ok, failed = run_variant(args.plyform, args.outdir, name, opts, args.threads)
+        run_dir, ok, failed = run_variant(args.plyform, args.outdir, name, opts, args.threads,
+                                          args.reuse if k == 0 else None)
         status |= 0 if ok else 1
         res = json.load(open(os.path.join(run_dir, "results.json")))
         summary = json.load(open(os.path.join(run_dir, "summary.json")))
