@@ -4,7 +4,7 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N]
-                        [--soften F] [--width B] [--name NAME]
+                        [--soften F] [--width B] [--elform N] [--nu NU] [--name NAME]
 
 Two elastic shell arms (each its own mesh, 1.5 mm thick, 100 mm long, B = 20 mm wide) whose
 surfaces touch at t = 0; the upper arm is the slave side of *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
@@ -14,7 +14,8 @@ bonded (the slave side is the segment set of the upper arm's elements beyond a0)
 a total opening DELTA. Elements DX long along the arms, NY across the width (NY = 1: a strip
 one element wide). --soften F divides C_N by F and sigma_max by sqrt(F): the same G_Ic with a
 cohesive zone F^(1/4) times longer (resolved by coarser elements). --ihq 0: the parts take the
-deck's default (viscous) hourglass control. --width B: the specimen's width (20 mm).
+deck's default (viscous) hourglass control. --width B: the specimen's width (20 mm). --elform N:
+the arms' shell formulation (2, Belytschko-Tsay, by default; 16, fully integrated).
 Poisson's ratio 0, so that beam theory holds for any width (see README.md).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
@@ -85,7 +86,7 @@ def tip_curve(end, delta, ramp):
     return pts, v
 
 
-def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH):
+def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2, nu=NU):
     cn, smax = CN / soften, SMAX / soften ** 0.5  # the same omega = G_Ic
     nx = round(LENGTH / dx)
     lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS, width)
@@ -104,12 +105,13 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH):
     step = max(1, round(every / dx))
     path = [upper_nodes[i][0] for i in range(round(A0 / dx), nx + 1, step)]
     k += ["*DATABASE_HISTORY_NODE\n"] + ids([tip_upper, tip_lower] + path)
-    k += ["*PART\nlower arm (master)\n", card(1, 1, 1, 0, 1 if ihq else 0)]
-    k += ["*PART\nupper arm (slave)\n", card(2, 1, 1, 0, 1 if ihq else 0)]
-    if ihq:
+    hgid = 1 if ihq and elform != 16 else 0  # ELFORM 16 has no zero-energy modes to control
+    k += ["*PART\nlower arm (master)\n", card(1, 1, 1, 0, hgid)]
+    k += ["*PART\nupper arm (slave)\n", card(2, 1, 1, 0, hgid)]
+    if ihq and elform != 16:
         k += ["*HOURGLASS\n", card(1, ihq, HG_QM)]
-    k += ["*SECTION_SHELL\n", card(1, 2, 0.8333, 3), card(*([THICKNESS] * 4))]
-    k += ["*MAT_ELASTIC\n", card(1, RHO, E, NU)]
+    k += ["*SECTION_SHELL\n", card(1, elform, 0.8333, 3), card(*([THICKNESS] * 4))]
+    k += ["*MAT_ELASTIC\n", card(1, RHO, E, nu)]
     k += ["*NODE\n"]
     for n, x, y, z in lower_nodes + upper_nodes:
         k.append(f"{n:8d}{x:16.8f}{y:16.8f}{z:16.8f}\n")
@@ -147,9 +149,9 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH):
     k += ids(float(v) if isinstance(v, float) else v for v in uc)
     k += ["*END\n"]
     params = {
-        "length": LENGTH, "width": width, "thickness": THICKNESS, "a0": A0, "E": E, "nu": NU,
+        "length": LENGTH, "width": width, "thickness": THICKNESS, "a0": A0, "E": E, "nu": nu,
         "rho": RHO, "cn": cn, "sigma_max": smax, "eta": ETA, "vdc": VDC, "delta": delta,
-        "end": end, "ramp": RAMP, "v_tip": v_tip, "dx": dx, "ny": ny, "interface": 1,
+        "end": end, "ramp": RAMP, "elform": elform, "v_tip": v_tip, "dx": dx, "ny": ny, "interface": 1,
         "tip_upper": tip_upper, "tip_lower": tip_lower, "path_nodes": path,
         "tip_upper_nodes": [n for n, x, *_ in upper_nodes if x == 0.0],
     }
@@ -158,6 +160,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH):
 
 def main(argv):
     outdir, dx, ny, end, name, every, ihq, soften = ".", 0.5, 1, END, "dcb", 5.0, 4, 1.0
+    elform, nu = 2, NU
     width = WIDTH
     args = list(argv)
     while args:
@@ -174,6 +177,12 @@ def main(argv):
             soften = float(args.pop(0))
         elif a == "--ihq":
             ihq = int(args.pop(0))
+        elif a == "--elform":
+            elform = int(args.pop(0))
+            if elform not in (2, 16):
+                sys.exit("generate.py: --elform takes 2 (Belytschko-Tsay) or 16 (fully integrated)")
+        elif a == "--nu":
+            nu = float(args.pop(0))
         elif a == "--every":
             every = float(args.pop(0))
         elif a == "--name":
@@ -183,7 +192,7 @@ def main(argv):
         else:
             outdir = a
     os.makedirs(outdir, exist_ok=True)
-    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften, width)
+    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften, width, elform, nu)
     with open(os.path.join(outdir, name + ".k"), "w") as f:
         f.write(text)
     with open(os.path.join(outdir, name + ".json"), "w") as f:

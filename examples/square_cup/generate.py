@@ -4,7 +4,7 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
-                        [--dt2ms DT] [--elform 2|16] [--name NAME]
+                        [--dt2ms DT] [--elform 2|16] [--plain] [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -23,6 +23,8 @@ tool meshes are the tools' surfaces). --n N: elements along the quarter blank's 
 core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/s).
 --dt2ms DT: mass scaling to the time step DT (0: none). --elform 16: the blank's shells fully
 integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-Tsay.
+--plain: the deck as a user writes it: every setting the solver leaves to its defaults (no
+*CONTROL_CONTACT, no *HOURGLASS, no contact but the tools' and the two cohesive ones).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -243,7 +245,8 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     # PENOPT 3: every contact's penalty from its slave side. The default (the smaller of the
     # two sides) would take the soft core's: about 31 MPa/mm, under which the pressure at the
     # tools' radii (100 MPa and more) sinks the layers a few millimetres into each other.
-    k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3)]
+    if not PLAIN:
+        k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3)]
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9, 0, 0.0, -dt2ms if dt2ms > 0 else 0.0)]
     k += ["*DATABASE_BINARY_D3PLOT\n", card(end / 15)]
     out_dt = end / 400
@@ -255,9 +258,10 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     for part, title, t, z, ne, mat, m, rows in sheets:
         history += [rows[0][ne], rows[ne][0], rows[ne][ne], rows[0][0]]
     k += ["*DATABASE_HISTORY_NODE\n"] + ids(history)
-    k += ["*HOURGLASS\n", card(1, 4, HG_QM)]
+    if not PLAIN:
+        k += ["*HOURGLASS\n", card(1, 4, HG_QM)]
     for part, title, t, z, ne, mat, m, rows in sheets:
-        hgid = 0 if ELFORM == 16 else 1
+        hgid = 0 if ELFORM == 16 or PLAIN else 1
         k += [f"*PART\n{title}\n", card(part, part, 1 if mat == "al" else 2, 0, hgid)]
         k += ["*SECTION_SHELL\n", card(part, ELFORM, 0.8333, 5 if mat == "al" else 3),
               card(*([t] * 4))]
@@ -315,7 +319,8 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         # cohesive contact carries the friction). Its penalty is the slave's (PENOPT 3): the
         # core's 1/60 of a skin's, scaled by SFS to about the skin's.
         sfs = 1969.0 / (0.1 * CORE_E / (3 * (1 - 2 * CORE["nu"])) / (BLANK_HALF / n * 2 ** 0.5))
-        for cid, title, master in ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1)):
+        backup = () if PLAIN else ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1))
+        for cid, title, master in backup:
             k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
             k += [card(2, master, 3, 3), card(0.0, 0.0, 0.0, 0.0, 0.0), card(round(sfs, 1), 1.0)]
     k += ["*END\n"]
@@ -354,6 +359,8 @@ def write_deck(outdir, name, text, params):
 # The blank's shell formulation: 2 (Belytschko-Tsay, stiffness hourglass control) or 16 (fully
 # integrated, no hourglass control).
 ELFORM = 2
+# --plain: no setting beyond the defaults (see the module's docstring).
+PLAIN = False
 
 
 def main(argv):
@@ -383,6 +390,8 @@ def main(argv):
             globals()[key] = float(value)
         elif a == "--elform":
             globals()["ELFORM"] = int(args.pop(0))
+        elif a == "--plain":
+            globals()["PLAIN"] = True
         elif a == "--name":
             name = args.pop(0)
         elif a.startswith("-"):

@@ -216,14 +216,24 @@ TEST(CheckCommand, ADeckThatDoesNotBuildIsNeverCalledValid) {
 // 4 x 4 upper plate) against 36 segments (the 6 x 6 lower plate), half of 1 mm on both sides,
 // following the thickness (a cohesive interface); interior slave nodes carry 0.1 K A / d of a
 // 2.5 mm shell over its area: 0.1 * 166667 / 3.5355 = 4714 per length; the 2 mm master segments
-// 0.1 * 166667 / 2.8284 = 5893; PENOPT 1 takes the smaller.
+// 0.1 * 166667 / 2.8284 = 5893; the deck leaves PENOPT blank, so the cohesive interface takes
+// the layer rule (the stiffer side within the step). Its guard, pass 2, puts the 49 nodes of
+// the lower plate against the 16 segments of the upper one.
 TEST(CheckCommand, ShowsTheContactAsBuilt) {
   const CheckRun r = check(std::filesystem::path(PLYFORM_SOURCE_DIR) / "examples" / "fundamental" /
                            "fundamental.k");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("  contact 1 pass 1: 25 slave nodes against 36 segments; offsets slave "
                        "0.5, master 0.5 (following the thickness); penalty per area slave 4714, "
-                       "master 5893, PENOPT 1: the smaller (SOFT 0)\n"),
+                       "master 5893, PENOPT 0: a layer interface's: the stiffer side, at most "
+                       "m* / (4 dt0^2) (SOFT 0)\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("  contact 1 pass 2: 49 slave nodes against 16 segments; offsets slave "
+                       "0.5, master 0.5 (following the thickness); penalty per area slave 5893, "
+                       "master 4714, PENOPT 0: a layer interface's: the stiffer side, at most "
+                       "m* / (4 dt0^2); the guard: the master's nodes against the slave's "
+                       "segments, pressure only, beyond a tenth of the offsets (SOFT 0)\n"),
             std::string::npos)
       << r.out;
 }

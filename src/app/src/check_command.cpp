@@ -324,7 +324,15 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
       // layers into each other.
       const std::vector<double> k_area = setup::slave_penalty_per_area(cp);
       const std::vector<double> km_area = setup::master_penalty_per_area(m, cp);
-      std::string used = c.penopt == 3 ? "slave" : c.penopt == 2 ? "master" : "the smaller";
+      std::string used = c.penopt == 3   ? "slave"
+                         : c.penopt == 2 ? "master"
+                         : c.penopt == 0 ? "a layer interface's: the stiffer side, at most "
+                                           "m* / (4 dt0^2)"
+                                         : "the smaller";
+      if (cp.guard)
+        used +=
+            "; the guard: the master's nodes against the slave's segments, pressure only, "
+            "beyond a tenth of the offsets";
       fmt::print(out,
                  "  contact {} pass {}: {} slave nodes against {} segments; offsets slave {}, "
                  "master {}{}; penalty per area slave {}, master {}, PENOPT {}: {} (SOFT {})\n",

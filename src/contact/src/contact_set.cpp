@@ -41,6 +41,21 @@ double chunked_sum(std::size_t n, std::vector<double>& part, F&& f) {
 }
 
 // The largest sigma_max of a law over its temperature range (the cohesive capture distance).
+// The law of a cohesive interface's guard pass: the same normal damping, pressure only.
+law::Parameters guard_law(const law::Parameters& bonded) {
+  law::Parameters p = bonded;
+  p.beta0 = 0.0;  // no adhesion, ever: beta stays 0
+  p.bond_tol = 0.0;
+  p.zeta = {0.0, 0.0, -1};
+  p.mu = {0.0, 0.0, -1};
+  p.friction = law::FrictionModel::coulomb;
+  p.ct = 0.0;
+  p.decay_dc = 0.0;
+  p.friction_limit = 0.0;
+  p.release_gap = std::numeric_limits<double>::infinity();
+  return p;
+}
+
 double largest_sigma_max(const law::Parameters& p) {
   if (p.sigma_max.curve >= 0) {
     const law::Curve& c = p.curves[static_cast<std::size_t>(p.sigma_max.curve)];
@@ -69,6 +84,8 @@ struct PassRuntime {
   std::vector<double> tracked_ref;         // their positions at the last search
   double margin = 0.0;
   double capture = 0.0;  // the cohesive band
+  bool bonds = false;    // the pass carries the cohesive law (not a plain contact, not a guard)
+  bool guard = false;    // core::ContactPass::guard
   // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
   std::vector<double> slave_offset, seg_offset;
   double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
@@ -136,14 +153,17 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
   for (const core::ContactInterface& ci : model.contacts) {
     // The search reaches the cohesive band: beyond 2 g_c / sqrt(BETA_MIN) a bonded node has
     // lost all but a negligible part of its adhesion, and the law releases it there.
-    double capture = 0.0;
-    law::Parameters params = ci.law;
+    double bond_capture = 0.0;
+    law::Parameters bond_params = ci.law;
     if (ci.cohesive) {
-      const double gc = largest_sigma_max(params) / params.cn;
-      capture = 2.0 * gc / std::sqrt(std::max(params.beta_min, 1e-12));
-      params.release_gap = std::min(params.release_gap, capture);
+      const double gc = largest_sigma_max(bond_params) / bond_params.cn;
+      bond_capture = 2.0 * gc / std::sqrt(std::max(bond_params.beta_min, 1e-12));
+      bond_params.release_gap = std::min(bond_params.release_gap, bond_capture);
     }
     for (const core::ContactPass& cp : ci.passes) {
+      const bool bonds = ci.cohesive && !cp.guard;
+      const double capture = bonds ? bond_capture : 0.0;
+      const law::Parameters params = cp.guard ? guard_law(ci.law) : bond_params;
       if constexpr (core::kCheckInvariants) {
         const auto in_range = [&](core::Index n) {
           return n >= 0 && static_cast<std::size_t>(n) < model.node_count();
@@ -160,8 +180,10 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       auto pr = std::make_unique<PassRuntime>(params);
       pr->iface = &ci;
       pr->pass = &cp;
+      pr->bonds = bonds;
+      pr->guard = cp.guard;
       pr->dt0 = dt0;
-      pr->need_mass = params.vdc > 0.0 || ci.penalty == core::PenaltyKind::mass;
+      pr->need_mass = params.vdc > 0.0 || ci.penalty == core::PenaltyKind::mass || ci.penopt == 0;
       const std::size_t ns = cp.slave_count();
       const std::size_t nseg = cp.segment_count();
       pr->history = law::HistoryStore(ns);
@@ -197,8 +219,8 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       // Just beyond the band where the law releases a bonded node: the node is released, and
       // the elastic energy it is booked as giving up is that of its spring at the band's edge
       // (a gap far beyond would book an energy the interface never held).
-      pr->far_gap = ci.cohesive ? params.release_gap * (1.0 + 1e-9) + 1.0e-30
-                                : 2.0 * (capture + max_radius) + 1.0e-30;
+      pr->far_gap = bonds ? params.release_gap * (1.0 + 1e-9) + 1.0e-30
+                          : 2.0 * (capture + max_radius) + 1.0e-30;
       // Nodes whose motion can bring a slave node within reach of a new segment.
       std::vector<char> mark(model.node_count(), 0);
       for (core::Index n : cp.slave_nodes)
@@ -593,12 +615,26 @@ double effective_mass(double ms, double mm) {
   return ms + mm > 0.0 ? ms * mm / (ms + mm) : 0.0;
 }
 
+// A layer interface's penalty is held below kLayerPenaltyScale m* / dt0^2.
+constexpr double kLayerPenaltyScale = 0.25;
+
 // The penalty stiffness [force/length] of slave k against segment s (PENOPT, SOFT).
 double penalty(const PassRuntime& pr, std::size_t k, core::Index s, double m_eff) {
   const core::ContactInterface& ci = *pr.iface;
   const double ks = pr.pass->slave_stiffness[k];
   const double km = pr.pass->segment_stiffness[static_cast<std::size_t>(s)];
   double kk = ci.penopt == 2 ? km : ci.penopt == 3 ? ks : std::min(ks, km);
+  if (ci.penopt == 0) {
+    // A layer interface (core::ContactInterface::penopt): the stiffer side's penalty, so that
+    // a soft core does not let the press sink stiff skins into it, held where the spring's
+    // frequency on the pair's mass would reach half the first step's (sqrt(k / m*) dt0 =
+    // 1/2): together with the elements' highest mode at the node, still inside the central
+    // difference's limit, and its step vote never binds.
+    double hi = std::max(ks, km);
+    if (pr.dt0 > 0.0 && m_eff > 0.0)
+      hi = std::min(hi, kLayerPenaltyScale * m_eff / (pr.dt0 * pr.dt0));
+    kk = std::max(kk, hi);
+  }
   if (ci.penalty == core::PenaltyKind::mass && pr.dt0 > 0.0)
     kk = std::max(kk, 0.5 * ci.sofscl * m_eff / (pr.dt0 * pr.dt0));
   return kk;
@@ -686,7 +722,7 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
   // frequency squared, leaving the other half to the elements at that node. A tangential
   // spring on offset surface points also turns the nodes: its inverse mass adds o^2 / I of
   // each side (the rotary inertia of the shells).
-  const bool cohesive = pr.iface->cohesive;
+  const bool cohesive = pr.bonds;
   const double cn = pr.law.parameters().cn;
   const double ct = cohesive ? pr.law.parameters().ct : 0.0;
   double vote = kInf;
@@ -929,6 +965,9 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     else if (tol < 0.0 && g > tol)
       tol = g < 0.0 ? g : 0.0;
     pr.gap[k] = g - tol;
+    // A guard acts only beyond a tenth of the two offsets' depth (core::ContactPass::guard).
+    if (pr.guard)
+      pr.gap[k] += 0.1 * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
     // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
     if (!was_located)
       h.gap[k] = pr.gap[k];
@@ -1117,8 +1156,8 @@ void ContactSet::start(const double* packed) {
       // penetration.
       if (pr.seg[k] < 0 || pr.gap[k] >= -1e-9 * pr.margin)
         continue;
-      if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact &&
-          pr.iface->cohesive && pr.law.parameters().bond_tol >= -pr.gap[k])
+      if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact && pr.bonds &&
+          pr.law.parameters().bond_tol >= -pr.gap[k])
         continue;  // bonded at t = 0 within BOND_TOL
       if (!pr.tie_state.empty() && static_cast<TieState>(pr.tie_state[k]) == TieState::tied)
         continue;  // tied where it is
@@ -1346,6 +1385,8 @@ std::vector<InterfaceReport> ContactSet::report() const {
       r.friction += h.e_friction[k];
       r.damping += h.e_damping[k];
       r.healing += h.e_healing[k];
+      if (pr.guard)
+        continue;  // the counts are the interface's points, the first pass's nodes
       const auto st = static_cast<law::NodeState>(h.state[k]);
       if (st == law::NodeState::contact && pr.pressure[k] > 0.0)
         ++r.in_contact;
@@ -1361,7 +1402,7 @@ void ContactSet::cohesive_results(std::vector<SlaveNodeResult>& out) const {
   for (const auto& pp : passes_) {
     const PassRuntime& pr = *pp;
     // A tiebreak's history is the law's too: beta 1 while a node is tied, 0 once it failed.
-    if (!pr.iface->cohesive && pr.iface->tiebreak.option == 0)
+    if ((!pr.bonds && pr.iface->tiebreak.option == 0) || pr.guard)
       continue;
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
@@ -1418,9 +1459,12 @@ void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatL
       continue;
     // A one-way link (ALGO 1) keeps the deck's master side: only the first pass (the deck's
     // slave against its master) carries heat, with the whole slave area.
-    if (heat.one_way && pr.pass != &pr.iface->passes.front())
+    if ((heat.one_way && pr.pass != &pr.iface->passes.front()) || pr.guard)
       continue;
-    const double share = heat.one_way ? 1.0 : 1.0 / static_cast<double>(pr.iface->passes.size());
+    // A guard pass (core::ContactPass::guard) carries no heat: the first pass has the area.
+    const auto heat_passes = std::count_if(pr.iface->passes.begin(), pr.iface->passes.end(),
+                                           [](const core::ContactPass& p) { return !p.guard; });
+    const double share = heat.one_way ? 1.0 : 1.0 / static_cast<double>(heat_passes);
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
       const core::Index sg = pr.seg[k];
@@ -1465,7 +1509,7 @@ void ContactSet::take_friction_heat(std::vector<double>& energy) {
   for (const auto& pp : passes_) {
     PassRuntime& pr = *pp;
     const core::ContactHeat& heat = pr.iface->heat;
-    if (!heat.enabled || !heat.friction_heat)
+    if (!heat.enabled || !heat.friction_heat || pr.guard)
       continue;
     // The swapped pass of a two-way contact has the deck's master nodes as its slaves.
     const double to_slave = pr.pass->slave_side_sign > 0 ? heat.ftosa : 1.0 - heat.ftosa;

@@ -476,8 +476,9 @@ struct ContactBuilder {
     const double slsfac =
         d.control_contact && d.control_contact->slsfac > 0.0 ? d.control_contact->slsfac : 0.1;
     const int shlthk = d.control_contact ? d.control_contact->shlthk : 0;
-    const int penopt =
-        d.control_contact && d.control_contact->penopt > 0 ? d.control_contact->penopt : 1;
+    // 0: the deck leaves PENOPT blank (a plain contact then takes LS-DYNA's 1, a cohesive
+    // interface its own rule: core::ContactInterface::penopt).
+    const int penopt_given = d.control_contact ? d.control_contact->penopt : 0;
     const int nsbcs = d.control_contact ? d.control_contact->nsbcs : 0;
     const bool thkchg = d.control_contact && d.control_contact->thkchg == 1;
     std::unordered_map<int, const model::ContactDesc*> first_with_id;
@@ -513,7 +514,7 @@ struct ContactBuilder {
       }
       ci.penalty = c.soft == 1 ? core::PenaltyKind::mass : core::PenaltyKind::material;
       ci.sofscl = c.sofscl;
-      ci.penopt = penopt;
+      ci.penopt = penopt_given > 0 ? penopt_given : 1;
       ci.maxpar = c.maxpar;
       ci.search_interval = c.bsort > 0 ? c.bsort : nsbcs;
       ci.ignore = c.ignore > 0 ? c.ignore : (d.control_contact ? d.control_contact->ignore : 0);
@@ -562,6 +563,10 @@ struct ContactBuilder {
         }
         ci.cohesive = true;
         ci.law = *law.parameters;
+        // A layer interface: a soft layer (a polymer core) must not make the whole interface
+        // soft, or the press sinks the layers into each other.
+        if (penopt_given == 0)
+          ci.penopt = 0;
         if (c.fs != 0.0 || c.fd != 0.0 || c.dc != 0.0 || c.vc != 0.0 || c.vdc != 0.0) {
           warnings.push_back({c.card1, c.keyword, "FS",
                               "contact " + std::to_string(c.id) +
@@ -640,6 +645,23 @@ struct ContactBuilder {
         }
       }
       ci.passes.push_back(std::move(a));
+      const auto any_rigid = [](const Surface& s) {
+        return std::any_of(s.rigid.begin(), s.rigid.end(), [](char r) { return r != 0; });
+      };
+      if (ci.cohesive && c.sstyp != model::ContactSideType::node_set && !slave->segments.empty() &&
+          !any_rigid(*slave) && !any_rigid(*master)) {
+        // The guard: the master's nodes kept out of the slave's surface (a one-way contact
+        // lets a coarser master's nodes through a finer slave between its nodes). Between two
+        // deformable layers only: a tool's mesh is its surface, as in any forming contact.
+        core::ContactPass g;
+        g.offsets_follow_thickness = follow;
+        g.guard = true;
+        if (!fill_slaves(c, *master, master_only, slsfac * c.sfm, c.mst, c.sfmt, rigid_offset, g))
+          continue;
+        fill_master(*slave, slsfac * c.sfs, c.sst, c.sfst, rigid_offset, g);
+        g.slave_side_sign = -1;
+        ci.passes.push_back(std::move(g));
+      }
       if (two_way) {
         core::ContactPass b;
         b.offsets_follow_thickness = follow;

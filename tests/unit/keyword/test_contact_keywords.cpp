@@ -350,11 +350,12 @@ TEST(ControlContact, ValuesDefaultsAndFieldsThatChangeNothing) {
   EXPECT_DOUBLE_EQ(c.vfc, 5.0);
   EXPECT_EQ(c.where.line, 3);
 
-  // Blank and 0: LS-DYNA's defaults (SLSFAC 0.1, PENOPT 1); cards 2-4 optional.
+  // Blank and 0: LS-DYNA's defaults (SLSFAC 0.1); PENOPT 0 stays "not given" (a plain contact
+  // then takes 1, a cohesive interface its layer rule: setup); cards 2-4 optional.
   const ReadResult d = read_ok("*CONTROL_CONTACT\n0.0,0,0,0,0\n");
   ASSERT_TRUE(d.model.control_contact.has_value());
   EXPECT_DOUBLE_EQ(d.model.control_contact->slsfac, 0.1);
-  EXPECT_EQ(d.model.control_contact->penopt, 1);
+  EXPECT_EQ(d.model.control_contact->penopt, 0);
   EXPECT_EQ(d.model.control_contact->shlthk, 0);
   EXPECT_EQ(d.model.control_contact->thkchg, 0);
   EXPECT_EQ(d.model.control_contact->nsbcs, 0);
@@ -366,7 +367,7 @@ TEST(ControlContact, GivenTwiceTheLastWinsWithAWarning) {
       read_ok("*CONTROL_CONTACT\n0.2\n*CONTROL_CONTACT\n0.3,0,0,0,2\n*CONTROL_CONTACT\n\n");
   ASSERT_TRUE(r.model.control_contact.has_value());
   EXPECT_DOUBLE_EQ(r.model.control_contact->slsfac, 0.1);
-  EXPECT_EQ(r.model.control_contact->penopt, 1);
+  EXPECT_EQ(r.model.control_contact->penopt, 0);
   ASSERT_EQ(r.warnings.size(), 2u);
   EXPECT_EQ(r.warnings[0].where.line, 3);
   EXPECT_EQ(r.warnings[0].keyword, "*CONTROL_CONTACT");

@@ -269,9 +269,8 @@ void read_control_contact(KeywordInput& in) {
   desc.shlthk = c1.integer("SHLTHK");
   // PENOPT 4 (the slave node's stiffness weighted by area) is PENOPT 3 in plyform: a slave
   // node's stiffness is already the area-weighted share of its faces' (docs/contact.md).
-  desc.penopt = c1.integer("PENOPT") == 0   ? 1
-                : c1.integer("PENOPT") == 4 ? 3
-                                            : static_cast<int>(c1.integer("PENOPT"));
+  // A blank (0) stays 0: the contacts then take their own default (build_contact).
+  desc.penopt = c1.integer("PENOPT") == 4 ? 3 : static_cast<int>(c1.integer("PENOPT"));
   desc.thkchg = c1.integer("THKCHG");
   if (const auto line2 = in.next_line()) {
     const CardValues c2 = in.read(kCards[1], *line2);

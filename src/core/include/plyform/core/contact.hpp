@@ -73,6 +73,12 @@ struct ContactPass {
   /// +1 when the slave nodes are the interface's slave side (rcforc sums the force on them),
   /// -1 in the swapped pass of a two-way contact (the master nodes are the slave side then).
   int slave_side_sign = 1;
+  /// The guard of a cohesive interface: its master's nodes against its slave's segments,
+  /// pressure only (no adhesion, friction or heat: the law's state is the first pass's), and
+  /// only beyond a tenth of the two offsets' depth, so that it keeps the layers in order where
+  /// a node of the master would pass through the slave between its nodes without stiffening
+  /// the bonded interface in compression.
+  bool guard = false;
   [[nodiscard]] std::size_t slave_count() const { return slave_nodes.size(); }
   [[nodiscard]] std::size_t segment_count() const { return segments.size() / 4; }
 };
@@ -134,8 +140,11 @@ struct ContactInterface {
   ContactKind kind = ContactKind::one_way;
   std::vector<ContactPass> passes;
   PenaltyKind penalty = PenaltyKind::material;
-  double sofscl = 0.1;      ///< SOFSCL (SOFT = 1)
-  int penopt = 1;           ///< 1 min(slave, master), 2 master, 3 slave stiffness
+  double sofscl = 0.1;  ///< SOFSCL (SOFT = 1)
+  /// 1 min(slave, master), 2 master, 3 slave stiffness; 0: a layer interface's rule (a
+  /// cohesive interface whose deck leaves PENOPT blank): the stiffer side's, held to the
+  /// stiffness whose frequency is half the first step's, never below the softer side's
+  int penopt = 1;
   double maxpar = 1.025;    ///< a projection this far outside a segment still counts
   int search_interval = 0;  ///< cycles between full searches (0: only when motion asks)
   double birth = 0.0;

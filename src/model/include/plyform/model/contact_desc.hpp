@@ -98,15 +98,17 @@ struct SetSegmentDesc {
 struct ControlContactDesc {
   double slsfac = 0.1;  ///< SLSFAC: penalty scale factor of every contact (a written 0 is 0.1)
   int shlthk = 0;       ///< SHLTHK: shell thickness in non-automatic contacts (see docs)
-  int penopt = 1;       ///< PENOPT: 1 min(slave, master), 2 master, 3 slave stiffness
-  int thkchg = 0;       ///< THKCHG: 1 = offsets follow the current shell thickness
-  int nsbcs = 0;        ///< NSBCS: cycles between bucket sorts (0: automatic)
-  int frceng = 0;       ///< FRCENG: 1 = friction heats the _THERMAL contacts' sides (SOLN 2)
-  int ignore = 0;       ///< IGNORE: initial penetrations 0 pushed out, 1 tracked, 2 tracked+listed
-  double sfric = 0.0;   ///< SFRIC: default static friction (contacts with FS = 0)
-  double dfric = 0.0;   ///< DFRIC: default dynamic friction
-  double edc = 0.0;     ///< EDC: default decay coefficient
-  double vfc = 0.0;     ///< VFC: default viscous friction limit
+  /// PENOPT: 1 min(slave, master), 2 master, 3 slave stiffness; 0 when the deck leaves it
+  /// blank (1 for a plain contact, a cohesive interface's own rule: docs/contact.md)
+  int penopt = 0;
+  int thkchg = 0;      ///< THKCHG: 1 = offsets follow the current shell thickness
+  int nsbcs = 0;       ///< NSBCS: cycles between bucket sorts (0: automatic)
+  int frceng = 0;      ///< FRCENG: 1 = friction heats the _THERMAL contacts' sides (SOLN 2)
+  int ignore = 0;      ///< IGNORE: initial penetrations 0 pushed out, 1 tracked, 2 tracked+listed
+  double sfric = 0.0;  ///< SFRIC: default static friction (contacts with FS = 0)
+  double dfric = 0.0;  ///< DFRIC: default dynamic friction
+  double edc = 0.0;    ///< EDC: default decay coefficient
+  double vfc = 0.0;    ///< VFC: default viscous friction limit
   SourceLocation where;
 };
 

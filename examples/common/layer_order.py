@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""Whether the layers of a three-layer sheet stay in order in every state of a run: no node of
+the core beyond either skin's mid-surface (a core node passed through a skin), no node of a
+skin beyond the core's mid-surface (a skin node passed through the core), and the adhesion
+intensity beta within [0, 1]. An independent check of the contact: it reads the states'
+geometry (results_*.vtu), not the contact's own gaps.
+
+    /usr/bin/python3 layer_order.py OUTDIR --lower P --core P --upper P --reach R
+
+Node ids are 100000 * part + k (the examples' generators). R: how far sideways from a node of
+the other layer a node is still judged against it (half an element). Exit 1 when the order
+breaks in any state. Needs numpy and VTK (python3-vtk9).
+"""
+
+import argparse
+import glob
+import os
+import sys
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def read_state(path):
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    g = r.GetOutput()
+    point = {g.GetPointData().GetArrayName(k): vtk_to_numpy(g.GetPointData().GetArray(k))
+             for k in range(g.GetPointData().GetNumberOfArrays())}
+    cell = {g.GetCellData().GetArrayName(k): vtk_to_numpy(g.GetCellData().GetArray(k))
+            for k in range(g.GetCellData().GetNumberOfArrays())}
+    x = vtk_to_numpy(g.GetPoints().GetData())
+    conn = vtk_to_numpy(g.GetCells().GetConnectivityArray()).reshape(-1, 4)
+    return x, point, cell, conn
+
+
+def part_of_node(ids):
+    """Node ids are 100000 * part + k (the examples' generators)."""
+    return ids // 100000
+
+
+def beyond(x, part, cells, cell_part, movers, layer, sign, reach):
+    """Nodes of part `movers` whose position lies beyond the mid-surface of part `layer` (on
+    its side `sign`: +1 above its normal, -1 below): for each, the nearest node of the layer
+    within `reach` sideways and the signed distance along the layer's nodal normal there (the
+    mean of its elements' normals, which point from the lower layer to the upper)."""
+    quads = cells[cell_part == layer]
+    a, b = x[quads[:, 2]] - x[quads[:, 0]], x[quads[:, 3]] - x[quads[:, 1]]
+    n_cell = np.cross(a, b)
+    normal = np.zeros_like(x)
+    for k in range(4):
+        np.add.at(normal, quads[:, k], n_cell)
+    nodes = np.where(part == layer)[0]
+    nn = normal[nodes] / np.linalg.norm(normal[nodes], axis=1)[:, None]
+    movers = np.where(part == movers)[0]
+    count = 0
+    for chunk in np.array_split(movers, max(1, len(movers) // 256)):
+        d = x[chunk][:, None, :] - x[nodes][None, :, :]
+        nearest = np.argmin(np.einsum("ijk,ijk->ij", d, d), axis=1)
+        rel = x[chunk] - x[nodes][nearest]
+        along = np.einsum("ij,ij->i", rel, nn[nearest])
+        side = np.linalg.norm(rel - along[:, None] * nn[nearest], axis=1)
+        count += int(np.sum((sign * along > 0.0) & (side < reach)))
+    return count
+
+
+def crossings(x, ids, cells, cell_part, lower, core, upper, reach):
+    """Nodes on the wrong side of a neighbouring layer's mid-surface, all four ways: the core's
+    nodes above the upper skin or below the lower skin, the upper skin's below the core, the
+    lower skin's above the core."""
+    part = part_of_node(ids)
+    return (beyond(x, part, cells, cell_part, core, upper, 1.0, reach) +
+            beyond(x, part, cells, cell_part, core, lower, -1.0, reach) +
+            beyond(x, part, cells, cell_part, upper, core, -1.0, reach) +
+            beyond(x, part, cells, cell_part, lower, core, 1.0, reach))
+
+
+def check(outdir, lower, core, upper, reach, report):
+    """Reports 'layers in order' and 'beta range' over every state of the run in OUTDIR."""
+    paths = sorted(glob.glob(os.path.join(outdir, "results_*.vtu")))
+    worst, when, bad_beta = 0, 0, 0
+    for k, path in enumerate(paths):
+        x, pd, cd, conn = read_state(path)
+        c = crossings(x, pd["node_id"].astype(np.int64), conn, cd["part"].astype(np.int64),
+                      lower, core, upper, reach)
+        if c > worst:
+            worst, when = c, k
+        if "beta" in pd:
+            b = pd["beta"][np.isfinite(pd["beta"])]
+            bad_beta += int(np.sum((b < 0.0) | (b > 1.0)))
+    report("layers in order", worst == 0,
+           f"at most {worst} nodes beyond a neighbouring layer's mid-surface (state {when}) over "
+           f"{len(paths)} states")
+    report("beta range", bad_beta == 0, f"{bad_beta} values outside [0, 1] in {len(paths)} states")
+
+
+def main(argv):
+    a = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    a.add_argument("outdir")
+    a.add_argument("--lower", type=int, required=True)
+    a.add_argument("--core", type=int, required=True)
+    a.add_argument("--upper", type=int, required=True)
+    a.add_argument("--reach", type=float, required=True)
+    args = a.parse_args(argv)
+    failures = []
+
+    def report(name, ok, text):
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: {text}")
+        if not ok:
+            failures.append(name)
+
+    check(args.outdir, args.lower, args.core, args.upper, args.reach, report)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
