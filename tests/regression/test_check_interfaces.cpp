@@ -1,5 +1,5 @@
 // `plyform check` warns before the run about the interface choices known to go wrong
-// (setup/interface_warnings.hpp, docs/check.md), each on a deck that shows it and decks that
+// (setup/interface_warnings.hpp, docs/contact.md), each on a deck that shows it and decks that
 // must not: a cohesive interface on one-point shells with viscous hourglass control; a layer
 // interface whose penalty the tool's pressure pushes through; a layer interface whose step
 // vote sets the run's step. The decks: two 10 x 10 mm shell layers of one element each (mid-
@@ -34,6 +34,7 @@ struct Stack {
   int soft = 0;             // SOFT of the interface
   bool holder = false;      // a rigid holder on the upper layer
   double force = 0.0;       // > 0: *LOAD_RIGID_BODY pressing the holder; 0: a prescribed motion
+  bool nodal = false;       // the force as *LOAD_NODE_POINT, a quarter on each holder node
 };
 
 // Nodes of layer l at z = l * kT; its element 1 + l; part 1 + l.
@@ -79,10 +80,15 @@ std::string deck(const Stack& s) {
   if (s.holder) {
     d << "*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n         2holder\n2,3,3,3\n0.1\n1.0,1.0\n"
       << "*DEFINE_CURVE\n1\n0.0,1.0\n1.0,1.0\n";
-    if (s.force > 0.0)
+    if (s.force > 0.0 && s.nodal) {
+      d << "*LOAD_NODE_POINT\n";
+      for (int n = 21; n <= 24; ++n)
+        d << n << ",3,1," << -0.25 * s.force << "\n";
+    } else if (s.force > 0.0) {
       d << "*LOAD_RIGID_BODY\n3,3,1," << -s.force << "\n";
-    else
+    } else {
       d << "*BOUNDARY_PRESCRIBED_MOTION_RIGID\n3,3,0,1,-1.0\n";
+    }
   }
   d << "*END\n";
   return d.str();
@@ -179,6 +185,13 @@ TEST(CheckInterfaces, APenaltyThePressurePushesThroughIsWarned) {
   EXPECT_NEAR(number_after(line, "penalty of at least "), pressure / (0.05 * kT),
               1e-3 * pressure / (0.05 * kT))
       << line;
+  // The same force as nodal loads on the holder's nodes.
+  s.nodal = true;
+  const auto nodal = warnings(s, kPressure);
+  ASSERT_EQ(nodal.size(), 1u);
+  EXPECT_NEAR(number_after(nodal[0], "presses the layers with at least "), pressure,
+              1e-4 * pressure)
+      << nodal[0];
 }
 
 TEST(CheckInterfaces, AStiffEnoughOrMassPenaltyOrNoForceIsNotWarned) {

@@ -1,6 +1,6 @@
 #pragma once
 // What `plyform check` warns about before a run, on the contact interfaces between layers: the
-// choices known to break them (docs/check.md). Each check is a pure function of the built
+// choices known to break them (docs/contact.md). Each check is a pure function of the built
 // model (and, for the step, of the steps the run will start with) and gives one warning per
 // interface (and part) concerned, naming it by its deck ids with the remedy.
 
