@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/engine/initial_contact_step.hpp"
 #include "plyform/engine/initial_step.hpp"
 #include "plyform/keyword/read_deck.hpp"
 #include "plyform/law/user_constants.hpp"
@@ -22,6 +23,7 @@
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
 #include "plyform/setup/hinge_resolution.hpp"
+#include "plyform/setup/interface_warnings.hpp"
 #include "plyform/setup/validate.hpp"
 
 namespace plyform::app {
@@ -396,6 +398,23 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
   print_stable_step(m, out);
 }
 
+// What is known to break the interfaces between layers (setup/interface_warnings.hpp), as
+// warnings before the run: they do not make the deck invalid.
+void print_interface_warnings(const core::Model& m, std::ostream& err) {
+  std::vector<setup::InterfaceWarning> all = setup::viscous_hourglass_warnings(m);
+  for (auto& w : setup::penalty_pressure_warnings(m))
+    all.push_back(std::move(w));
+  const engine::InitialStep step = engine::initial_stable_step(m);
+  const double tssfac = m.controls.tssfac > 0.0 ? m.controls.tssfac : 0.9;
+  if (step.dt < 1e300 && !m.contacts.empty()) {
+    for (auto& w :
+         setup::contact_step_warnings(m, tssfac * step.dt, engine::initial_contact_steps(m)))
+      all.push_back(std::move(w));
+  }
+  for (const setup::InterfaceWarning& w : all)
+    fmt::print(err, "warning: {}\n", w.message);
+}
+
 }  // namespace
 
 int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err) {
@@ -447,6 +466,8 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
   for (const setup::HingeAdvice& a :
        built ? setup::hinge_resolution_advice(*built->model) : std::vector<setup::HingeAdvice>{})
     fmt::print(out, "advice: {}\n", a.message);
+  if (built)
+    print_interface_warnings(*built->model, err);
   return 0;
 }
 
