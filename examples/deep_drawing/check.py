@@ -44,6 +44,11 @@ _spec = importlib.util.spec_from_file_location(
                                      "square_cup", "check.py"))
 cup_check = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(cup_check)
+_spec = importlib.util.spec_from_file_location(
+    "layer_order", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common",
+                                "layer_order.py"))
+layer_order = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(layer_order)
 
 PUNCH_HALF = 35.0
 DIE_EDGE = 37.235 + 8.0  # the die opening's half-width plus its shoulder radius
@@ -80,33 +85,6 @@ def read_state(path, cells=False):
         conn = vtk_to_numpy(g.GetCells().GetConnectivityArray()).reshape(-1, 4)
         return x, point, cell, conn
     return x, point, cell
-
-
-def crossings(x, ids, cells, cell_part, p, reach):
-    """Core nodes whose mid-surface lies beyond a skin's mid-surface: the layers' order
-    broken (a core node passed through a skin). For each core node, the nearest node of each
-    skin within `reach` sideways and the signed distance along that skin's normal there (the
-    mean of its elements' normals, which point from the lower layer to the upper)."""
-    part = part_of_node(ids)
-    core = np.where(part == p["core"])[0]
-    count = 0
-    for skin, sign in ((max(p["skins"]), 1.0), (min(p["skins"]), -1.0)):
-        quads = cells[cell_part == skin]
-        a, b = x[quads[:, 2]] - x[quads[:, 0]], x[quads[:, 3]] - x[quads[:, 1]]
-        n_cell = np.cross(a, b)
-        normal = np.zeros_like(x)
-        for k in range(4):
-            np.add.at(normal, quads[:, k], n_cell)
-        nodes = np.where(part == skin)[0]
-        nn = normal[nodes] / np.linalg.norm(normal[nodes], axis=1)[:, None]
-        for chunk in np.array_split(core, max(1, len(core) // 256)):
-            d = x[chunk][:, None, :] - x[nodes][None, :, :]
-            nearest = np.argmin(np.einsum("ijk,ijk->ij", d, d), axis=1)
-            rel = x[chunk] - x[nodes][nearest]
-            along = np.einsum("ij,ij->i", rel, nn[nearest])
-            side = np.linalg.norm(rel - along[:, None] * nn[nearest], axis=1)
-            count += int(np.sum((sign * along > 0.0) & (side < reach)))
-    return count
 
 
 def part_of_node(ids):
@@ -203,12 +181,13 @@ def main(outdir, params_path):
     reach = 0.5 * p["blank_half"] / p["n"]
     for t, path in seq:
         x, pd, cd, conn = read_state(path, cells=True)
-        c = crossings(x, pd["node_id"].astype(np.int64), conn, cd["part"].astype(np.int64), p,
-                      reach)
+        c = layer_order.crossings(x, pd["node_id"].astype(np.int64), conn,
+                                  cd["part"].astype(np.int64), min(p["skins"]), p["core"],
+                                  max(p["skins"]), reach)
         if c > worst_cross[0]:
             worst_cross = (c, t)
     report("layers in order", worst_cross[0] == 0,
-           f"at most {worst_cross[0]} core nodes beyond a skin's mid-surface (at t = "
+           f"at most {worst_cross[0]} nodes beyond a neighbouring layer's mid-surface (at t = "
            f"{worst_cross[1]:.4g} s) over {len(seq)} states")
     results["core_nodes_through_skins"] = worst_cross[0]
     _, pe, ce = read_state(seq[-1][1])

@@ -27,9 +27,10 @@ y = 0, or with --full the whole blank and tools (mirrored meshes, no symmetry co
   (the matrix's solidification and melt): weak adhesion and fast re-healing in the melt,
   strong adhesion and no healing when solid. --interface chooses how the layers are
   coupled (README: the paper's outlook):
-    two-way  (default) the cohesive contacts plus a plain contact of the core's nodes
-             against each skin, so that neither side's nodes pass through the other;
-    one-way  the cohesive contacts alone (the paper's model);
+    one-way  (default) the cohesive contacts alone (the paper's model); each keeps the
+             core's nodes out of its skin too (its guard pass, docs/contact.md);
+    two-way  the cohesive contacts plus a plain contact of the core's nodes against each
+             skin (what this deck needed before the guard);
     tiebreak LS-DYNA's built-in *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK (OPTION 2,
              both ways) instead of the cohesive law.
 - Heat: *CONTROL_SOLUTION 2; the blank starts at T_BLANK, the tools (rigid, not
@@ -153,7 +154,7 @@ def thermal_card(h, lmin=0.0):
     return card(0.0, 0.0, h, lmin, LMAX, 0.5, 0, 0)
 
 
-def deck(n=40, core_n=None, depth=25.0, full=False, interface="two-way", end_time=None):
+def deck(n=40, core_n=None, depth=25.0, full=False, interface="one-way", end_time=None):
     hold_start, ramp = 0.2e-3, 1.0e-3
     end = hold_start + depth / SPEED + 0.5 * ramp
     core_n = core_n or max(2, round(n * 2 / 3))
@@ -177,9 +178,9 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="two-way", end_tim
     k = ["*KEYWORD\n", "*TITLE\n",
          f"plyform hot deep drawing, steel / woven carbon-PA6 / steel, {interface} interfaces\n"]
     k += ["*CONTROL_TERMINATION\n", card(end_time or end)]
-    # PENOPT 3: each contact's penalty from its slave side (the soft core would otherwise set
-    # the interfaces' penalty; examples/square_cup/README.md). FRCENG 1: friction heats.
-    k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3), card(0), card(0.0), card(0, 1)]
+    # FRCENG 1: friction heats. PENOPT blank: the cohesive interfaces take the stiffer side's
+    # penalty (docs/contact.md), the tools' contacts LS-DYNA's default.
+    k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 0), card(0), card(0.0), card(0, 1)]
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9)]
     k += ["*CONTROL_SOLUTION\n", card(2)]
     #     ATYPE PTYPE SOLVER CGTOL GPT EQHEAT FWORK; card 2: TSF in columns 71-80
@@ -269,8 +270,8 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="two-way", end_tim
             k += interface_law_cards(cid)
     if interface == "two-way":
         # The core's nodes against each skin, frictionless (the cohesive contact carries the
-        # friction). PENOPT 3 takes the slave's penalty: the ply's, which counts its fibres'
-        # stiffness, is already that of the skins.
+        # friction); PENOPT 1 takes the smaller side's penalty, the ply's, which counts its
+        # fibres' stiffness and is about the skins'.
         for cid, title, master in ((6, "core under the upper skin", 3),
                                    (7, "core on the lower skin", 1)):
             k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n",
@@ -305,7 +306,7 @@ def main(argv):
     ap.add_argument("--core-n", type=int, default=None, help="core elements (default 2/3 n)")
     ap.add_argument("--depth", type=float, default=25.0, help="punch travel (mm)")
     ap.add_argument("--full", action="store_true", help="the whole blank and tools")
-    ap.add_argument("--interface", choices=("two-way", "one-way", "tiebreak"), default="two-way")
+    ap.add_argument("--interface", choices=("two-way", "one-way", "tiebreak"), default="one-way")
     ap.add_argument("--skin-elform", type=int, choices=(2, 16), default=SKIN_ELFORM)
     ap.add_argument("--end", type=float, default=None, help="end time (default: the stroke's)")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",

@@ -21,12 +21,21 @@ mkdir -p "${outdir}"
 outdir="$(cd "${outdir}" && pwd)"
 py="$(command -v python3 || echo /usr/bin/python3)"
 status=0
-for layers in 1 3; do
-  name="square_cup_${layers}"
-  "${py}" "${here}/generate.py" "${outdir}" --layers "${layers}"
+# The single sheet, the sandwich as shipped, and the sandwich written plainly: no *HOURGLASS
+# (one-point shells with the viscous default), a softer core (E 1000 MPa) drawn at 2 m/s.
+for case in 1 3 plain; do
+  name="square_cup_${case}"
+  options=(--layers "${case}")
+  [[ ${case} == plain ]] && options=(--layers 3 --plain --speed 2000 --set CORE_E=1000 --name "${name}")
+  "${py}" "${here}/generate.py" "${outdir}" "${options[@]}"
   echo "run.sh: plyform run ${name}.k --threads 2"
   "${plyform}" run "${outdir}/${name}.k" -o "${outdir}/${name}" --threads 2 </dev/null | tail -n 4
   "${py}" "${here}/check.py" "${outdir}/${name}" "${outdir}/${name}.json" || status=1
+  if [[ ${case} != 1 ]] && /usr/bin/python3 -c "import vtk, numpy" 2>/dev/null; then
+    # Layers in order in every state (an independent reading of the states' geometry).
+    /usr/bin/python3 "${here}/../common/layer_order.py" "${outdir}/${name}" --lower 1 --core 2 \
+      --upper 3 --reach 1.0 || status=1
+  fi
 done
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
   /usr/bin/python3 "${here}/plot.py" "${outdir}/square_cup.png" \

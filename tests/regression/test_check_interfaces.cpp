@@ -32,6 +32,7 @@ struct Stack {
   double bond_tol = 0.0;    // its BOND_TOL (> 0: bonded at t = 0)
   double e_upper = kSteel;  // Young's modulus of the upper layer (the slave side)
   int soft = 0;             // SOFT of the interface
+  int penopt = 0;           // *CONTROL_CONTACT PENOPT; 0: no *CONTROL_CONTACT
   bool holder = false;      // a rigid holder on the upper layer
   double force = 0.0;       // > 0: *LOAD_RIGID_BODY pressing the holder; 0: a prescribed motion
   bool nodal = false;       // the force as *LOAD_NODE_POINT, a quarter on each holder node
@@ -69,6 +70,8 @@ std::string deck(const Stack& s) {
     d << "*HOURGLASS\n1," << s.ihq << ",0.05\n";
   d << "*MAT_ELASTIC\n1," << kRho << "," << kSteel << "," << kNu << "\n*MAT_ELASTIC\n2," << kRho
     << "," << s.e_upper << "," << kNu << "\n";
+  if (s.penopt > 0)
+    d << "*CONTROL_CONTACT\n0.1,0,0,0," << s.penopt << "\n";
   d << "*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n         1interface\n2,1,3,3\n0.0\n1.0,1.0\n";
   if (s.soft != 0)
     d << s.soft << "\n";
@@ -210,7 +213,9 @@ TEST(CheckInterfaces, AStiffEnoughOrMassPenaltyOrNoForceIsNotWarned) {
   moved.force = 0.0;
   EXPECT_TRUE(warnings(moved, kPressure).empty());
   // A cohesive law that bonds the layers at t = 0 holds them with C_N = 1e4 in compression
-  // (1e-6 mm); without BOND_TOL they meet the soft penalty and it is warned again.
+  // (1e-6 mm). Without BOND_TOL they meet the contact's penalty: with PENOPT left blank a
+  // layer interface takes the stiffer side's (the steel's 1237 MPa/mm), not warned; with
+  // PENOPT 1 written in the deck, the soft side's, and it is warned again.
   Stack bonded = s;
   bonded.cohesive = true;
   bonded.cn = 1.0e4;
@@ -218,6 +223,8 @@ TEST(CheckInterfaces, AStiffEnoughOrMassPenaltyOrNoForceIsNotWarned) {
   bonded.ihq = 4;
   EXPECT_TRUE(warnings(bonded, kPressure).empty());
   bonded.bond_tol = 0.0;
+  EXPECT_TRUE(warnings(bonded, kPressure).empty());
+  bonded.penopt = 1;
   EXPECT_EQ(warnings(bonded, kPressure).size(), 1u);
 }
 

@@ -53,6 +53,7 @@ law::Parameters guard_law(const law::Parameters& bonded) {
   p.decay_dc = 0.0;
   p.friction_limit = 0.0;
   p.release_gap = std::numeric_limits<double>::infinity();
+  p.vdc = 0.0;
   return p;
 }
 
@@ -562,6 +563,47 @@ constexpr double kFaces = -0.2;
 // as near to the side face whose plane it lies in as to the top face it presses into, nearer
 // once it has pressed in; it must take the top face, which its own surface faces (as LS-DYNA
 // does), or it falls through. Returns -1 when no candidate is within reach.
+// Whether point p is surely out of segment s's reach, told without the projection (a Newton
+// solve): the quad as the parallelogram c + xi a + eta b through its centroid, the point's
+// (xi, eta) in it by least squares, and the point's distance along a x b. A point of a convex
+// quad has |xi|, |eta| <= 2 in that parallelogram (a corner of a trapezoid's long edge reads
+// 2 l / (l + s) < 2), so beyond 2.1 plus MAXPAR's tolerance, or beyond the segment's search
+// radius along the normal, it cannot project inside. Triangles are always projected.
+inline bool out_of_reach(const PassRuntime& pr, core::Index s, const double* p, double tol,
+                         const double* packed) {
+  const auto su = static_cast<std::size_t>(s);
+  const core::Index* q = &pr.pass->segments[4 * su];
+  if (q[2] == q[3])
+    return false;
+  const double* x0 = at(packed, q[0]);
+  const double* x1 = at(packed, q[1]);
+  const double* x2 = at(packed, q[2]);
+  const double* x3 = at(packed, q[3]);
+  double a[3], b[3], d[3];
+  for (int i = 0; i < 3; ++i) {
+    a[i] = 0.25 * (-x0[i] + x1[i] + x2[i] - x3[i]);
+    b[i] = 0.25 * (-x0[i] - x1[i] + x2[i] + x3[i]);
+    d[i] = p[i] - 0.25 * (x0[i] + x1[i] + x2[i] + x3[i]);
+  }
+  const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+  const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+  const double ab = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const double det = aa * bb - ab * ab;
+  if (!(det > 1e-12 * aa * bb))
+    return false;
+  const double ad = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+  const double bd = b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
+  const double xi = (bb * ad - ab * bd) / det, eta = (aa * bd - ab * ad) / det;
+  const double reach = 2.1 + tol;
+  if (std::fabs(xi) > reach || std::fabs(eta) > reach)
+    return true;
+  const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                       a[0] * b[1] - a[1] * b[0]};
+  const double along = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+  const double r = pr.seg_radius[su];
+  return along * along > 1.1 * r * r * det;  // |n|^2 = det
+}
+
 core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_located,
                    const double* packed, Located& best) {
   const core::Index cur = pr.seg[k];
@@ -580,8 +622,16 @@ core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_loc
   bool best_faces = false;
   core::Index found = -1;
   const double tie = 1e-6 * pr.margin;
+  const double* p = at(packed, pr.pass->slave_nodes[k]);
   for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
     const core::Index s = pr.cand[c];
+    // A candidate out of reach is passed over before the projection (a Newton solve): a
+    // point that projects inside the segment (to MAXPAR) lies within its corners' distance
+    // from its centroid, scaled by MAXPAR, in the plane, and within its radius along the
+    // normal. Nodes with no segment (a layer's nodes beyond the other layer's edge) try their
+    // candidates every cycle, and most are out of reach.
+    if (out_of_reach(pr, s, p, tol, packed))
+      continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     if (L.sp.degenerate || L.sp.outside > tol ||
         std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)] || behind(pr, s, L))
@@ -614,6 +664,13 @@ double effective_mass(double ms, double mm) {
     return ms;
   return ms + mm > 0.0 ? ms * mm / (ms + mm) : 0.0;
 }
+
+// A guard pass acts beyond this share of the two offsets' depth (core::ContactPass::guard):
+// deep enough that the interface's own penalty carries every pressure of a healthy run alone
+// (two stiff springs taking turns at one place chatter, and the friction's return mapping then
+// books more than the friction force's work), shallow enough to stop a node well before its
+// mid-surface reaches the other layer's.
+constexpr double kGuardDepth = 0.1;
 
 // A layer interface's penalty is held below kLayerPenaltyScale m* / dt0^2.
 constexpr double kLayerPenaltyScale = 0.25;
@@ -965,9 +1022,9 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     else if (tol < 0.0 && g > tol)
       tol = g < 0.0 ? g : 0.0;
     pr.gap[k] = g - tol;
-    // A guard acts only beyond a tenth of the two offsets' depth (core::ContactPass::guard).
+    // A guard acts only beyond kGuardDepth of the two offsets' depth.
     if (pr.guard)
-      pr.gap[k] += 0.1 * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
+      pr.gap[k] += kGuardDepth * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
     // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
     if (!was_located)
       h.gap[k] = pr.gap[k];

@@ -78,8 +78,11 @@ double contact_penalty(const core::Model& m, const core::ContactInterface& c) {
   double k = 0.0;
   for (const core::ContactPass& p : c.passes) {
     const SidePenalty s = side_penalty(m, p);
+    // PENOPT 0, a layer interface's rule: the stiffer side (the run holds it below
+    // m* / (4 dt0^2), which needs the masses and the step: this is its upper bound).
     const double kp = c.penopt == 2   ? s.master
                       : c.penopt == 3 ? s.slave
+                      : c.penopt == 0 ? std::max(s.slave, s.master)
                                       : std::min(s.slave, s.master);
     k = std::max(k, kp);  // a two-way contact: the stiffer pass holds the layers apart
   }

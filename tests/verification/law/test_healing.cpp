@@ -43,6 +43,35 @@ TEST(Healing, ConstantPressureRecoversFullyInTheClosedFormTime) {
   }
 }
 
+// Healing forms new bonds where the layers are: a held shear opening under pressure keeps
+// the elastic energy of the adhesive shear spring C_T beta^2 (conservation: no work is done
+// while nothing moves), it does not grow with beta^2. Before the opening was rescaled, the
+// stored energy grew by (1/beta0)^2 = 4 times here while no work entered.
+TEST(Healing, AHeldShearOpeningKeepsItsElasticEnergy) {
+  Parameters p = test::probe_parameters();
+  p.zeta = {4.0, 4.0, -1};
+  p.ct = p.cn;
+  p.beta0 = 0.5;
+  const Law law(p);
+  NodeHistory h = law.initial_history(0.0);
+  const double pressure = 0.5, dt = 1e-3;
+  Increment in = hold(-pressure / kPenalty, dt);
+  in.slip[0] = 0.2 * test::critical_gap(p);  // one shear increment, below the damage threshold
+  Response r = law.update(in, h);
+  in.slip[0] = 0.0;
+  const double normal = 0.5 * kPenalty * in.gap * in.gap;
+  // The first step healed already: its stored energy is the one the opening was made with.
+  const double shear0 = r.stored - normal;
+  double t = 0.0;
+  while (h.beta < 1.0 && t < 10.0) {
+    r = law.update(in, h);
+    t += dt;
+  }
+  ASSERT_EQ(h.beta, 1.0);
+  EXPECT_NEAR(r.stored - normal, shear0, 1e-12 * shear0);
+  EXPECT_GT(shear0, 0.0);
+}
+
 TEST(Healing, NoHealingInTension) {
   Parameters p = test::probe_parameters();
   p.zeta = {4.0, 4.0, -1};

@@ -193,6 +193,14 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
     if (beta + db > 1.0)
       db = 1.0 - beta;
     if (db > 0.0) {
+      // New bonds form where the layers are now, free of strain: the adhesive shear spring
+      // C_T beta^2 keeps the elastic energy it held (its opening scales by beta_old /
+      // beta_new), or healing would create stored energy that no work paid for.
+      if (p.ct > 0.0 && beta > 0.0) {
+        const double keep = beta / (beta + db);
+        h.opening(0) *= keep;
+        h.opening(1) *= keep;
+      }
       beta += db;
       h.e_healing() += omega * db * area;
     }
