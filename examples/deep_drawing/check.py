@@ -36,8 +36,6 @@ import sys
 from collections import defaultdict
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
 _spec = importlib.util.spec_from_file_location(
     "square_cup_check", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
@@ -72,24 +70,11 @@ def states(outdir):
 
 
 def read_state(path, cells=False):
-    r = vtk.vtkXMLUnstructuredGridReader()
-    r.SetFileName(path)
-    r.Update()
-    g = r.GetOutput()
-    point = {g.GetPointData().GetArrayName(k): vtk_to_numpy(g.GetPointData().GetArray(k))
-             for k in range(g.GetPointData().GetNumberOfArrays())}
-    cell = {g.GetCellData().GetArrayName(k): vtk_to_numpy(g.GetCellData().GetArray(k))
-            for k in range(g.GetCellData().GetNumberOfArrays())}
-    x = vtk_to_numpy(g.GetPoints().GetData())
-    if cells:
-        conn = vtk_to_numpy(g.GetCells().GetConnectivityArray()).reshape(-1, 4)
-        return x, point, cell, conn
-    return x, point, cell
+    x, point, cell, conn = layer_order.read_state(path)
+    return (x, point, cell, conn) if cells else (x, point, cell)
 
 
-def part_of_node(ids):
-    """Node ids are 100000 * part + k (generate.py)."""
-    return ids // 100000
+part_of_node = layer_order.part_of_node
 
 
 def choose_points(history, x0, p):

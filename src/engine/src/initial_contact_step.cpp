@@ -16,23 +16,9 @@ std::vector<double> initial_contact_steps(const core::Model& model) {
     return {};
   // The nodal masses and rotary inertias as Simulation::set_up_run lumps them (mass scaling
   // included), at the reference geometry.
-  const element::NodalView view{model.x0.data(), model.y0.data(), model.z0.data(),
-                                model.x0.data(), model.y0.data(), model.z0.data(),
-                                model.x0.data(), model.y0.data(), model.z0.data()};
-  std::vector<element::SolidBlockState> solids(model.solid_blocks.size());
-  for (std::size_t b = 0; b < solids.size(); ++b) {
-    const core::SolidBlock& block = model.solid_blocks[b];
-    solids[b].resize(block, material::history_per_point(
-                                model.materials[static_cast<std::size_t>(block.material)]));
-  }
-  std::vector<element::ShellBlockState> shells(model.shell_blocks.size());
-  for (std::size_t b = 0; b < shells.size(); ++b) {
-    const core::ShellBlock& block = model.shell_blocks[b];
-    shells[b].resize(block, material::history_per_point(
-                                model.materials[static_cast<std::size_t>(block.material)]));
-  }
-  std::vector<double> mass, inertia;
-  lumped_mass(model, view, mass, inertia, solids, shells);
+  const ReferenceMasses ref = lumped_mass_at_reference(model);
+  const std::vector<double>& mass = ref.mass;
+  const std::vector<double>& inertia = ref.inertia;
   std::vector<unsigned char> rigid;
   try {
     rigid = rigid::RigidBodies(model).is_rigid_node();

@@ -9,23 +9,11 @@
 namespace plyform::engine {
 
 InitialStep initial_stable_step(const core::Model& model) {
-  const element::NodalView view{model.x0.data(), model.y0.data(), model.z0.data(),
-                                model.x0.data(), model.y0.data(), model.z0.data(),
-                                model.x0.data(), model.y0.data(), model.z0.data()};
-  std::vector<element::SolidBlockState> solids(model.solid_blocks.size());
-  for (std::size_t b = 0; b < solids.size(); ++b) {
-    const core::SolidBlock& block = model.solid_blocks[b];
-    solids[b].resize(block, material::history_per_point(
-                                model.materials[static_cast<std::size_t>(block.material)]));
-  }
-  std::vector<element::ShellBlockState> shells(model.shell_blocks.size());
-  for (std::size_t b = 0; b < shells.size(); ++b) {
-    const core::ShellBlock& block = model.shell_blocks[b];
-    shells[b].resize(block, material::history_per_point(
-                                model.materials[static_cast<std::size_t>(block.material)]));
-  }
-  std::vector<double> mass, inertia;
-  const MassResult masses = lumped_mass(model, view, mass, inertia, solids, shells);
+  const ReferenceMasses ref = lumped_mass_at_reference(model);
+  const MassResult& masses = ref.result;
+  const element::NodalView& view = ref.view;
+  const auto& solids = ref.solids;
+  const auto& shells = ref.shells;
 
   InitialStep r;
   r.physical_mass = masses.physical;

@@ -129,4 +129,29 @@ void block_masses(const core::Model& model, const element::NodalView& nodes,
       });
 }
 
+ReferenceMasses lumped_mass_at_reference(const core::Model& model) {
+  ReferenceMasses r{
+      {model.x0.data(), model.y0.data(), model.z0.data(), model.x0.data(), model.y0.data(),
+       model.z0.data(), model.x0.data(), model.y0.data(), model.z0.data()},
+      {},
+      {},
+      {},
+      {},
+      {}};
+  r.solids.resize(model.solid_blocks.size());
+  for (std::size_t b = 0; b < r.solids.size(); ++b) {
+    const core::SolidBlock& block = model.solid_blocks[b];
+    r.solids[b].resize(block, material::history_per_point(
+                                  model.materials[static_cast<std::size_t>(block.material)]));
+  }
+  r.shells.resize(model.shell_blocks.size());
+  for (std::size_t b = 0; b < r.shells.size(); ++b) {
+    const core::ShellBlock& block = model.shell_blocks[b];
+    r.shells[b].resize(block, material::history_per_point(
+                                  model.materials[static_cast<std::size_t>(block.material)]));
+  }
+  r.result = lumped_mass(model, r.view, r.mass, r.inertia, r.solids, r.shells);
+  return r;
+}
+
 }  // namespace plyform::engine

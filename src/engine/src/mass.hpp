@@ -25,6 +25,18 @@ MassResult lumped_mass(const core::Model& model, const element::NodalView& nodes
                        std::vector<element::SolidBlockState>& solids,
                        std::vector<element::ShellBlockState>& shells);
 
+/// lumped_mass at the reference geometry with fresh block states: the masses, rotary
+/// inertias and elements' step factors a run starts with (what `plyform check` reads of the
+/// step and the contacts' votes).
+struct ReferenceMasses {
+  element::NodalView view;  ///< the reference geometry (pointers into the model)
+  std::vector<element::SolidBlockState> solids;
+  std::vector<element::ShellBlockState> shells;
+  std::vector<double> mass, inertia;
+  MassResult result;
+};
+ReferenceMasses lumped_mass_at_reference(const core::Model& model);
+
 /// Each deformable block's share of the nodal masses lumped_mass gave (mass scaling included,
 /// from the blocks' dt_factor): the block's nodes in the order its elements name them, with
 /// the mass and rotary inertia its elements put there. Summed over the blocks they are the
