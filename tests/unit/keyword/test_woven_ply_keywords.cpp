@@ -98,6 +98,13 @@ std::string woven_with(int card, std::string_view text) {
   return deck.substr(0, at) + std::string(text) + deck.substr(end);
 }
 
+/// The deck with `extra` cards after its last one.
+std::string woven_plus(std::string_view extra) {
+  std::string deck(kWoven);
+  deck.append(extra);
+  return deck;
+}
+
 TEST(MatReinforcedThermoplastic, WhatPlyformDoesNotImplementIsRejectedByName) {
   const std::string_view kw = "*MAT_REINFORCED_THERMOPLASTIC";
   expect_error(woven_with(1, "5,1.5e-9,3.0,0,0.35,0,9,0"), 2, kw, "BETA", "kinematic");
@@ -111,8 +118,8 @@ TEST(MatReinforcedThermoplastic, WhatPlyformDoesNotImplementIsRejectedByName) {
   expect_error(woven_with(4, "101,0,0,0,5,6"), 5, kw, "EF1", "EF1 > 0");
   expect_error(woven_with(2, "2,2,0,0,0,0,0,0"), 3, kw, "A1", "vector a");
   expect_error(woven_with(1, "5,1.5e-9,0,0,0.35,0,0,0"), 2, kw, "EM", "EM must be > 0");
-  expect_error(std::string(kWoven) + "0.1,0,0,0,0\n9,0,1,0,0,0\n", 8, kw, "G23", "NFIB = 2");
-  expect_error(std::string(kWoven) + "0,1\n", 8, kw, "IHIS", "IHIS");
+  expect_error(woven_plus("0.1,0,0,0,0\n9,0,1,0,0,0\n"), 8, kw, "G23", "NFIB = 2");
+  expect_error(woven_plus("0,1\n"), 8, kw, "IHIS", "IHIS");
 }
 
 TEST(MatReinforcedThermoplastic, Meth2LockingFieldsAndPostvAreWarnedAbout) {
