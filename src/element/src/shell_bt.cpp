@@ -34,6 +34,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   constexpr std::size_t kPoints = kChunk * static_cast<std::size_t>(kMaxNip);
   double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
   double pdzz[kPoints], pcos[kPoints], psin[kPoints], pspin[kPoints];
+  double pmspin[kPoints], pturn[kPoints];  // laws that keep material lines (needs_frame_turn)
   // Temperature (thermal blocks) and the plastic strain before the law (plastic work heat).
   double ptemp[kPoints], peps0[kPoints], peth[kPoints];
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
@@ -51,6 +52,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   alignas(64) double LWX[4][kChunk], LWY[4][kChunk], LWZ[4][kChunk];
   alignas(64) double E[9][kChunk], XL[4][kChunk], YL[4][kChunk], B1[4][kChunk], B2[4][kChunk];
   alignas(64) double VL[12][kChunk], WL[12][kChunk], RATE[9][kChunk];
+  alignas(64) double MSPIN[kChunk], FTURN[kChunk];
   alignas(64) double AREA[kChunk], LEN[kChunk], TRI[kChunk];
   double work_old[kChunk];
   // Stress work of an element's thickness points over the step per unit area, for stresses
@@ -141,7 +143,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       b2[3] = (xl[2] - xl[0]) * inv2a;
       double dxx = 0, dyy = 0, lxy = 0, lyx = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
       double thx = 0, thy = 0;
-      double vy_loc[4];
+      double vx_loc[4], vy_loc[4];
       for (int i = 0; i < 4; ++i) {
         B1[i][k] = b1[i];
         B2[i][k] = b2[i];
@@ -153,6 +155,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         const double wzl = LWX[i][k] * nx + LWY[i][k] * ny + LWZ[i][k] * nz;
         VL[3 * i][k] = vxl, VL[3 * i + 1][k] = vyl, VL[3 * i + 2][k] = vzl;
         WL[3 * i][k] = wxl, WL[3 * i + 1][k] = wyl, WL[3 * i + 2][k] = wzl;
+        vx_loc[i] = vxl;
         vy_loc[i] = vyl;
         // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
         // u_x = u + z theta_y, u_y = v - z theta_x).
@@ -213,6 +216,12 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       RATE[6][k] = gxz + thy;
       RATE[7][k] = gyz - thx;
       RATE[8][k] = (0.5 * (a10 - a01) - s1v / s1x) * dt;
+      if constexpr (material::law_needs_frame_turn<LawOf<M>>()) {
+        // s1 at t_n was s1 - dt ds1/dt: the frame turned through atan of this, exactly.
+        const double s1u = 0.5 * (vx_loc[1] + vx_loc[2] - vx_loc[0] - vx_loc[3]);
+        MSPIN[k] = 0.5 * (a10 - a01) * dt;
+        FTURN[k] = dt * s1v / (s1x - dt * s1u);
+      }
     }
     // Per element: checks, the stable step, the stresses turned by the relative spin, the
     // strain increments at the thickness points, and the data the force stage needs.
@@ -361,6 +370,12 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         for (std::size_t k = 0; k < unip; ++k)
           pspin[k_el * unip + k] = phi;
       }
+      if constexpr (material::law_needs_frame_turn<LawOf<M>>()) {
+        for (std::size_t k = 0; k < unip; ++k) {
+          pmspin[k_el * unip + k] = MSPIN[k_el];
+          pturn[k_el * unip + k] = FTURN[k_el];
+        }
+      }
     }
     {
       const std::size_t q0 = unip * c0;
@@ -379,6 +394,10 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         pts.temperature = ptemp;
       if constexpr (material::law_needs_spin<Law>())
         pts.spin = pspin;
+      if constexpr (material::law_needs_frame_turn<Law>()) {
+        pts.material_spin = pmspin;
+        pts.frame_turn = pturn;
+      }
       if (plastic_heat)
         std::copy_n(&st.eps_p[q0], unip * chunk, peps0);
       Law::update_shell(mat, unip * chunk, pts);

@@ -45,6 +45,7 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
   constexpr std::size_t kP = 4 * static_cast<std::size_t>(kMaxNip);
   double pdxx[kP], pdyy[kP], pdxy[kP], pdyz[kP], pdzx[kP], pdzz[kP];
   double pcos[kP], psin[kP], pspin[kP], ptemp[kP], peps0[kP], peth[kP];
+  double pmspin[kP], pturn[kP];  // laws that keep material lines (needs_frame_turn)
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
   const bool expands = thermal && !block.expansion.x.empty();
   const bool plastic_heat = out.plastic_work != nullptr;
@@ -99,6 +100,11 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
     // The frame's own spin (it follows the mid-side vector s1, as in the BT kernel).
     const double s1x = 0.5 * (g.xl[1] + g.xl[2] - g.xl[0] - g.xl[3]);
     const double frame_spin = 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]) / s1x;
+    // The tangent of its exact turn over the step (for laws that keep material lines): s1 at t_n
+    // was s1 - dt ds1/dt.
+    [[maybe_unused]] const double frame_turn =
+        dt * 0.5 * (vl[1][1] + vl[2][1] - vl[0][1] - vl[3][1]) /
+        (s1x - dt * 0.5 * (vl[1][0] + vl[2][0] - vl[0][0] - vl[3][0]));
     // MITC4: the covariant transverse shear rate along each edge at its midpoint, from the
     // Mindlin field u_x = z theta_y, u_y = -z theta_x: gamma = (w_b - w_a) / 2 +
     // (x_b - x_a) / 2 * mean theta_y - (y_b - y_a) / 2 * mean theta_x. Edges A (1-2, eta = -1),
@@ -200,6 +206,10 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         pdyz[at] = 0.5 * kappa * gyz * dt;
         pdzx[at] = 0.5 * kappa * gxz * dt;
         pspin[at] = phi;
+        if constexpr (material::law_needs_frame_turn<Law>()) {
+          pmspin[at] = 0.5 * (am[1][0] - am[0][1]) * dt;
+          pturn[at] = frame_turn;
+        }
       }
     }
     double work_old[4];
@@ -275,6 +285,10 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         pts.temperature = ptemp;
       if constexpr (material::law_needs_spin<Law>())
         pts.spin = pspin;
+      if constexpr (material::law_needs_frame_turn<Law>()) {
+        pts.material_spin = pmspin;
+        pts.frame_turn = pturn;
+      }
       if (plastic_heat)
         std::copy_n(&st.eps_p[q0], ppe, peps0);
       Law::update_shell(mat, ppe, pts);

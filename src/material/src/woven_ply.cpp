@@ -177,27 +177,34 @@ void shell_update(const Ply& m, std::size_t n, const ShellPoints& pts) {
       h[H::jacobian] = 1.0;
     }
     const double dxx = pts.dxx[p], dyy = pts.dyy[p], dxy = pts.dxy[p];
-    const double phi = pts.spin != nullptr ? pts.spin[p] : 0.0;
-    // 1. dF = (I - A/2)^-1 (I + A/2), A = [[dxx, dxy - phi], [dxy + phi, dyy]].
+    const double w = pts.material_spin != nullptr ? pts.material_spin[p] : 0.0;
+    const double turn = pts.frame_turn != nullptr ? pts.frame_turn[p] : 0.0;
+    // 0. The frame turned through theta (tan theta = turn) over the step: what the history holds
+    //    in the frame at t_n is turned by -theta into the frame at t_{n+1}, exactly.
+    const double tc = 1.0 / std::sqrt(1.0 + turn * turn), ts = turn * tc;
+    // 1. dF = (I - A/2)^-1 (I + A/2), A = [[dxx, dxy - w], [dxy + w, dyy]]: the mid-step
+    //    velocity gradient times dt, in the frame at t_{n+1}.
     {
-      const double a00 = 0.5 * dxx, a01 = 0.5 * (dxy - phi), a10 = 0.5 * (dxy + phi),
-                   a11 = 0.5 * dyy;
+      const double a00 = 0.5 * dxx, a01 = 0.5 * (dxy - w), a10 = 0.5 * (dxy + w), a11 = 0.5 * dyy;
       const double m00 = 1.0 - a00, m01 = -a01, m10 = -a10, m11 = 1.0 - a11;
       const double idet = 1.0 / (m00 * m11 - m01 * m10);
       for (int i = 0; i < nf; ++i) {
         double* f = h + H::fibre + 2 * i;
-        const double nx = f[0] + a00 * f[0] + a01 * f[1];
-        const double ny = f[1] + a10 * f[0] + a11 * f[1];
+        const double fx = tc * f[0] + ts * f[1], fy = tc * f[1] - ts * f[0];
+        const double nx = fx + a00 * fx + a01 * fy;
+        const double ny = fy + a10 * fx + a11 * fy;
         f[0] = idet * (m11 * nx - m01 * ny);
         f[1] = idet * (m00 * ny - m10 * nx);
       }
     }
-    // 2. The matrix: turned by the spin as the element turns the stored stresses (Cayley), then
-    //    the plane-stress increment and return.
+    // 2. The matrix: its components turned into the new frame (by -theta, exactly) and by the
+    //    material's spin (Cayley: Jaumann over the step), then the plane-stress increment and
+    //    return.
     double* sm = h + H::matrix;
-    if (phi != 0.0) {
-      const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-      const double c = (1.0 - half_sq) * inv, s = phi * inv;
+    if (w != 0.0 || turn != 0.0) {
+      const double half_sq = 0.25 * w * w, inv = 1.0 / (1.0 + half_sq);
+      const double cw = (1.0 - half_sq) * inv, sw = w * inv;
+      const double c = cw * tc + sw * ts, s = sw * tc - cw * ts;  // the two turns composed
       const double sx = sm[0], sy = sm[1], sxy = sm[2];
       sm[0] = c * c * sx + s * s * sy - 2.0 * c * s * sxy;
       sm[1] = s * s * sx + c * c * sy + 2.0 * c * s * sxy;

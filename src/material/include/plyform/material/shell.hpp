@@ -51,6 +51,15 @@ struct ShellPoints {
   /// co-rotational frame over the step, radians about the normal, per point (the element has
   /// already turned the stored stresses by it); null otherwise.
   const double* spin = nullptr;
+  /// Laws that keep material lines (needs_frame_turn), per point: the material's own spin over
+  /// the step (radians about the normal: dt (L_yx - L_xy) / 2 of the mid-step velocity gradient
+  /// in the frame at t_{n+1}), and the tangent of the angle through which the co-rotational
+  /// frame turned over the step (exact for motion in the shell's plane). With them a direction
+  /// carried in the frame at t_n is turned into the frame at t_{n+1} exactly and then pushed
+  /// forward by the step's deformation: the fibres stay material lines to round-off, however
+  /// large the step's strain and turn together. Null otherwise.
+  const double* material_spin = nullptr;
+  const double* frame_turn = nullptr;
 };
 
 /// *MAT_ELASTIC, plane stress: d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise,

@@ -2,8 +2,9 @@
 // *MAT_REINFORCED_THERMOPLASTIC (249) for shells: the fibre families, the matrix and the shear
 // between the families of a woven (or unidirectional) ply. Per point the law carries each
 // family's fibre vector f_i in the shell's co-rotational frame (its length is the fibre stretch),
-// pushed forward every step by the step's deformation, so the directions follow the material
-// and are never re-derived from the element's geometry. Derivation: docs/materials.md.
+// turned with the frame and pushed forward every step by the step's deformation, so that it is
+// F a0 (a material line) and never re-derived from the element's geometry. Derivation:
+// docs/materials.md.
 
 #include <cstddef>
 
@@ -22,14 +23,16 @@ struct WovenPlyHistory {
   static constexpr std::size_t count = 14;
 };
 
-/// Plane-stress update of n points (needs pts.cos_t/sin_t for the first step, pts.spin, and
-/// pts.temperature where the law has curves against temperature; null temperatures read as 0).
-/// Per point:
-///  1. the fibre vectors (set at the first call from the material axis and ALPHi) are pushed
-///     forward, f <- dF f with dF = (I - A/2)^-1 (I + A/2), A = d_eps + spin (the mid-step
-///     velocity gradient relative to the frame, the exact increment of the deformation gradient
-///     of the one-point kinematics);
-///  2. the matrix stress turns with the spin and takes the plane-stress increment with E(T),
+/// Plane-stress update of n points (needs pts.cos_t/sin_t for the first step,
+/// pts.material_spin and pts.frame_turn, and pts.temperature where the law has curves against
+/// temperature; null temperatures read as 0). Per point:
+///  1. the fibre vectors (set at the first call from the material axis and ALPHi) are turned
+///     from the frame at t_n into the frame at t_{n+1} (by minus the frame's turn, exactly) and
+///     pushed forward, f <- dF f with dF = (I - A/2)^-1 (I + A/2), A = d_eps + material spin
+///     (the mid-step velocity gradient times dt: the exact increment of the point's
+///     deformation gradient), so that f = F a0 to round-off: a material line on any mesh;
+///  2. the matrix stress turns into the new frame and with the material's spin and takes the
+///     plane-stress increment with E(T),
 ///     nu(T), returned to the yield curve (at T) when there is one; the thickness strain is the
 ///     matrix's; J *= exp(tr d_eps);
 ///  3. the in-plane stress is s_m + sum_i (lambda_i P_i / J) a_i a_i (P_i the nominal fibre stress

@@ -28,6 +28,10 @@
 //                                       rotation of the material relative to the co-rotational
 //                                       frame over the step (ShellPoints::spin), for laws that
 //                                       carry directions in their history
+//   static constexpr bool needs_frame_turn;  optional (false when absent): shells, the
+//                                       material's own spin and the frame's exact turn over the
+//                                       step (ShellPoints::material_spin, frame_turn), for laws
+//                                       whose directions must stay material lines to round-off
 // The element kernels read only these traits: a new law needs no edit to a kernel.
 
 #include <array>
@@ -92,6 +96,16 @@ template <class Law>
 constexpr bool law_needs_spin() {
   if constexpr (requires { Law::needs_spin; })
     return Law::needs_spin;
+  else
+    return false;
+}
+
+/// Whether a shell law reads the material's spin and the frame's exact turn (its optional
+/// needs_frame_turn).
+template <class Law>
+constexpr bool law_needs_frame_turn() {
+  if constexpr (requires { Law::needs_frame_turn; })
+    return Law::needs_frame_turn;
   else
     return false;
 }

@@ -17,7 +17,7 @@ struct ReinforcedThermoplasticLaw {
                                 "fibre families in a thermoplastic matrix (woven ply, shells)"};
   static constexpr bool for_solids = false, for_shells = true;
   static constexpr bool needs_deformation_gradient = false, needs_material_axes = true;
-  static constexpr bool needs_temperature = true, needs_spin = true;
+  static constexpr bool needs_temperature = true, needs_frame_turn = true;
   static constexpr std::array<std::string_view, WovenPlyHistory::count> history{
       "fibre1_x",        "fibre1_y",        "fibre2_x",          "fibre2_y",         "fibre3_x",
       "fibre3_y",        "matrix_sxx",      "matrix_syy",        "matrix_sxy",       "jacobian",
