@@ -22,6 +22,7 @@
 #include "plyform/setup/build.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
+#include "plyform/setup/fibre_alignment.hpp"
 #include "plyform/setup/hinge_resolution.hpp"
 #include "plyform/setup/interface_warnings.hpp"
 #include "plyform/setup/validate.hpp"
@@ -465,6 +466,9 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
     print_mesh(m, *built->model, out);
   for (const setup::HingeAdvice& a :
        built ? setup::hinge_resolution_advice(*built->model) : std::vector<setup::HingeAdvice>{})
+    fmt::print(out, "advice: {}\n", a.message);
+  for (const setup::FibreAlignmentAdvice& a : built ? setup::fibre_alignment_advice(*built->model)
+                                                    : std::vector<setup::FibreAlignmentAdvice>{})
     fmt::print(out, "advice: {}\n", a.message);
   if (built)
     print_interface_warnings(*built->model, err);
