@@ -3,6 +3,7 @@
 // material-point tests of shells: picture frame, rigid rotation).
 
 #include <cmath>
+#include <functional>
 #include <utility>
 
 #include "plyform/core/model.hpp"
@@ -10,10 +11,17 @@
 
 namespace plyform::test {
 
-// Every node follows x = F(s) X, s from 0 to 1 over `end` in k steps of the tabulated motion.
+// Every node (or those `driven` picks) follows x = F(s) X, s from 0 to 1 over `end` in k steps
+// of the tabulated motion; every node keeps z and its rotations.
 template <class F>
-inline void prescribe_homogeneous(core::Model& m, double end, int k, F&& deformation) {
+inline void prescribe_homogeneous(core::Model& m, double end, int k, F&& deformation,
+                                  const std::function<bool(std::size_t)>& driven = {}) {
   for (std::size_t i = 0; i < m.node_count(); ++i) {
+    const auto node = static_cast<core::Index>(i);
+    if (driven && !driven(i)) {
+      m.fixed.push_back({node, core::dof_z | core::dof_rx | core::dof_ry | core::dof_rz});
+      continue;
+    }
     std::vector<double> t, ux, uy;
     for (int s = 0; s <= k; ++s) {
       double f[2][2];
@@ -22,7 +30,6 @@ inline void prescribe_homogeneous(core::Model& m, double end, int k, F&& deforma
       ux.push_back(f[0][0] * m.x0[i] + f[0][1] * m.y0[i] - m.x0[i]);
       uy.push_back(f[1][0] * m.x0[i] + f[1][1] * m.y0[i] - m.y0[i]);
     }
-    const auto node = static_cast<core::Index>(i);
     prescribe(m, {node}, 0, core::MotionKind::displacement, add_curve(m, t, ux));
     prescribe(m, {node}, 1, core::MotionKind::displacement, add_curve(m, t, uy));
     m.fixed.push_back({node, core::dof_z | core::dof_rx | core::dof_ry | core::dof_rz});
