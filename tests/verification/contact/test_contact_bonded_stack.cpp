@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "contact_decks.hpp"
 
@@ -23,7 +24,9 @@ namespace {
 
 constexpr double kE = 2.1e5, kRho = 7.85e-9, kLength = 20.0, kWidth = 1.0, kLoad = 1.0;
 constexpr double kCore = 1.0, kSkin = 0.25;
-constexpr double kRamp = 4e-3, kEnd = 5e-3;  // load ramp (many periods), then held
+// The load ramps over many periods of the first mode, then holds for about one (twice as long,
+// 4 and 5 ms, gave the same deflections within 0.05 %).
+constexpr double kRamp = 2e-3, kEnd = 2.6e-3;
 constexpr int kNx = 40;
 
 // Mean deflection of the tip of the core over the hold, and the run's energy ratio.
@@ -108,6 +111,8 @@ TEST(ContactBondedStack, BondedLayersBendAsOneSection) {
   const double expected =
       kLoad * std::pow(kLength, 3) / (3.0 * kE * i) + kLoad * kLength / (0.8333 * g * kWidth * h);
   const StackResult r = run_stack(true);
+  std::printf("bonded stack: tip %.5f mm against %.5f (%+.2f %%)\n", r.deflection, expected,
+              100.0 * (r.deflection / expected - 1.0));
   EXPECT_NEAR(r.deflection, expected, 0.02 * expected);
   EXPECT_NEAR(r.ratio, 1.0, 0.01);
   EXPECT_LT(r.hourglass_share, 0.05);
@@ -119,6 +124,8 @@ TEST(ContactBondedStack, FrictionlessLayersAddTheirBendingStiffnesses) {
   const double expected = kLoad * std::pow(kLength, 3) / (3.0 * kE * i_sum) +
                           kLoad * (i_core / i_sum) * kLength / (0.8333 * g * kWidth * kCore);
   const StackResult r = run_stack(false);
+  std::printf("frictionless stack: tip %.5f mm against %.5f (%+.2f %%)\n", r.deflection, expected,
+              100.0 * (r.deflection / expected - 1.0));
   EXPECT_NEAR(r.deflection, expected, 0.02 * expected);
   EXPECT_NEAR(r.ratio, 1.0, 0.01);
 }

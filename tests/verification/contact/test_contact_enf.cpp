@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "contact_decks.hpp"
 
@@ -29,7 +30,9 @@ namespace {
 
 constexpr double kE = 2.1e5, kRho = 7.85e-9, kHalfSpan = 20.0, kWidth = 1.0, kArm = 1.0;
 constexpr double kCrack = 10.0, kLoad = 1.0;
-constexpr double kRamp = 4e-3, kEnd = 5e-3;  // load ramp (many periods), then held
+// The load ramps over many periods of the first mode, then holds for about one (twice as long,
+// 4 and 5 ms, gave the same deflections within 0.05 %).
+constexpr double kRamp = 2e-3, kEnd = 2.6e-3;
 constexpr int kNx = 80;
 
 struct EnfResult {
@@ -127,6 +130,8 @@ TEST(ContactEndNotchedFlexure, ComplianceIsTheModeTwoClosedForm) {
   const double shear = kHalfSpan / (4.0 * 0.8333 * 0.5 * kE * kWidth * kArm);
   const double expected = kLoad * (bending + shear);
   const EnfResult r = run_enf();
+  std::printf("ENF: load point %.5f mm against %.5f (%+.2f %%)\n", r.deflection, expected,
+              100.0 * (r.deflection / expected - 1.0));
   EXPECT_NEAR(r.deflection, expected, 0.025 * expected)
       << "fully cracked: " << kLoad * 5.0 * l3 / (8.0 * kE * kWidth * h3);
   EXPECT_NEAR(r.ratio, 1.0, 0.01);

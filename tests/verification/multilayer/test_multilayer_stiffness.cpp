@@ -4,8 +4,9 @@
 //
 // A cantilever of length L = 100 mm and width b = 10 mm (strip_decks.hpp: aluminium 0.25 /
 // core 1.00 / aluminium 0.25 mm, E_s = 70000, E_c = 1500 MPa, nu = 0), every layer clamped at
-// x = 0, a load P at the tip of the upper skin ramped over four periods of the first mode and
-// held for two; the tip deflection is the core's, averaged over the hold.
+// x = 0, a load P at the tip of the upper skin ramped smoothly over two periods of the first
+// mode and held for one; the tip deflection is the core's, averaged over the hold (a ramp over
+// four periods and a hold of two, twice the cycles, gave the same deflections within 0.01 %).
 // - Bonded (cohesive law, C_N = C_T = 1e4 MPa/mm): the composite beam, from the transformed
 //   section (parallel axis theorem), EI_b = E_c b t_c^3 / 12 + 2 E_s (b t_s^3 / 12 + b t_s h^2)
 //   with h = (t_c + t_s) / 2 the skins' offset; and, the core being soft in shear, sandwich
@@ -59,7 +60,7 @@ struct Bend {
 
 Bend bend(Interface interface, double load) {
   const double period = first_period(interface == Interface::bonded ? ei_bonded() : ei_free());
-  const double ramp = 4.0 * period, end = 6.0 * period;
+  const double ramp = 2.0 * period, end = 3.0 * period;
   Deck d;
   d.kw("*CONTROL_TERMINATION").card(end);
   d.kw("*DATABASE_GLSTAT").card(end / 200);
