@@ -72,12 +72,16 @@ decltype(auto) with_hardening(const core::PowerLawPlasticity& m, F&& f) {
   return f(PowerHardening{m.k, m.n, e0});
 }
 
-/// Root of a decreasing scalar function r on [lo, hi] with r(lo) > 0 >= r(hi): Newton from lo,
-/// falling back to bisection whenever a step leaves the bracket (kinks of piecewise curves).
-/// f(x, r, dr) evaluates r(x) and r'(x). Stops when |r| <= tol or the bracket is at round-off.
+/// Root of a decreasing scalar function r on [lo, hi] with r(lo) > 0 >= r(hi): Newton from x0
+/// (lo by default), falling back to bisection whenever a step leaves the bracket (kinks of
+/// piecewise curves). f(x, r, dr) evaluates r(x) and r'(x). Stops when |r| <= tol, when the
+/// bracket is at round-off, or after a step shorter than step_tol, returning the stepped-to point
+/// unevaluated: a Newton step that short leaves an error of the order of its square, and a
+/// bisection step one below its length.
 template <class F>
-double solve_decreasing(F&& f, double lo, double hi, double tol) {
-  double x = lo;
+double solve_decreasing(F&& f, double lo, double hi, double tol, double step_tol = 0.0,
+                        double x0 = -1.0) {
+  double x = x0 > lo && x0 < hi ? x0 : lo;
   for (int it = 0; it < 200; ++it) {
     double r = 0.0, dr = 0.0;
     f(x, r, dr);
@@ -90,8 +94,8 @@ double solve_decreasing(F&& f, double lo, double hi, double tol) {
     double xn = x - r / dr;
     if (!(xn > lo && xn < hi))
       xn = 0.5 * (lo + hi);
-    if (hi - lo <= 4e-16 * hi || std::abs(xn - x) <= 1e-16 * x)
-      return xn;  // bracket or Newton step at round-off
+    if (hi - lo <= 4e-16 * hi || std::abs(xn - x) <= std::max(step_tol, 1e-16 * x))
+      return xn;  // bracket, or a step, at the accuracy asked for
     x = xn;
   }
   return x;
@@ -116,26 +120,55 @@ double radial_return(const H& h, double three_g, double q_tr, double e_n, double
 /// stress is p = p_tr / (1 + a gamma), (q, t) = (q_tr, t_tr) / (1 + b gamma),
 /// a = E / (2 (1 - nu)), b = 3 G, and sigma_eq^2(gamma) = A / (1 + a gamma)^2 + B / (1 + b gamma)^2
 /// with A = p_tr^2 / 4, B = 3 q_tr^2 / 4 + 3 t_tr^2. gamma solves
-/// r = sigma_eq^2 - sigma_y(e_n + gamma sigma_eq)^2 = 0. Returns gamma.
+/// r = 1 - sigma_y(e_n + gamma sigma_eq) / sigma_eq = 0: in this form r is linear in gamma for
+/// pure shear or pure p with perfect plasticity, so Newton needs about one step fewer than on
+/// sigma_eq^2 - sigma_y^2, and far fewer on large increments. It starts with the Newton step from
+/// gamma = 0, where everything is known from the trial state, and stops once a step moves the
+/// stress by less than 1e-13 of itself (a gamma, b gamma below 1e-13). Returns gamma.
+/// plane_stress_residual evaluates r and r'; the batched solver (plane_stress_batch.hpp) solves
+/// the same equation for many points at once.
+template <class H>
+inline void plane_stress_residual(const H& h, double a, double b, double big_a, double big_b,
+                                  double e_n, double g, double& r, double& dr) {
+  const double ua = 1.0 / (1.0 + a * g);
+  const double ub = 1.0 / (1.0 + b * g);
+  const double psi = std::sqrt(big_a * ua * ua + big_b * ub * ub);
+  const double inv_psi = 1.0 / psi;
+  const double dpsi = -(big_a * a * ua * ua * ua + big_b * b * ub * ub * ub) * inv_psi;
+  const double e = e_n + g * psi;
+  const double sy = h.value(e);
+  r = 1.0 - sy * inv_psi;
+  dr = -(h.slope(e) * (psi + g * dpsi) - sy * dpsi * inv_psi) * inv_psi;
+}
+
+/// The first iterate of plane_stress_return: the Newton step from gamma = 0, where sigma_eq,
+/// sigma_y and their slopes are the trial's. 0 when that step leaves (0, hi).
+template <class H>
+inline double plane_stress_first_step(const H& h, double a, double b, double big_a, double big_b,
+                                      double e_n, double psi_tr, double sy_n, double hi) {
+  const double dpsi0 = -(big_a * a + big_b * b) / psi_tr;
+  const double dr0 = -(h.slope(e_n) * psi_tr - sy_n * dpsi0 / psi_tr) / psi_tr;
+  const double g0 = -(1.0 - sy_n / psi_tr) / dr0;
+  return g0 > 0.0 && g0 < hi ? g0 : 0.0;
+}
+
+/// The stopping measures of plane_stress_return: |r| (a relative yield-surface distance) and a
+/// step that moves the stress by less than 1e-13 of itself (a gamma, b gamma).
+inline constexpr double kPlaneStressResidualTol = 1e-15;
+inline double plane_stress_step_tol(double a, double b) {
+  return 1e-13 / std::max(a, b);
+}
+
 template <class H>
 double plane_stress_return(const H& h, double a, double b, double big_a, double big_b, double e_n,
                            double psi_tr, double sy_n) {
   const double hi = (psi_tr / sy_n - 1.0) / std::min(a, b);
-  const double tol = 1e-15 * psi_tr * psi_tr;
   return solve_decreasing(
       [&](double g, double& r, double& dr) {
-        const double ua = 1.0 / (1.0 + a * g);
-        const double ub = 1.0 / (1.0 + b * g);
-        const double psi2 = big_a * ua * ua + big_b * ub * ub;
-        const double dpsi2 = -2.0 * (big_a * a * ua * ua * ua + big_b * b * ub * ub * ub);
-        const double psi = std::sqrt(psi2);
-        const double dpsi = 0.5 * dpsi2 / psi;
-        const double e = e_n + g * psi;
-        const double sy = h.value(e);
-        r = psi2 - sy * sy;
-        dr = dpsi2 - 2.0 * sy * h.slope(e) * (psi + g * dpsi);
+        plane_stress_residual(h, a, b, big_a, big_b, e_n, g, r, dr);
       },
-      0.0, hi, tol);
+      0.0, hi, kPlaneStressResidualTol, plane_stress_step_tol(a, b),
+      plane_stress_first_step(h, a, b, big_a, big_b, e_n, psi_tr, sy_n, hi));
 }
 
 }  // namespace plyform::material::detail

@@ -1,8 +1,10 @@
 #include "plyform/material/shell.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "hardening.hpp"
+#include "plane_stress_batch.hpp"
 #include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material {
@@ -55,6 +57,18 @@ void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t
                                 double* __restrict sxx, double* __restrict syy,
                                 double* __restrict sxy, double* __restrict eps_p,
                                 double* __restrict dzz) {
+  if constexpr (std::is_same_v<H, detail::LinearHardening>) {
+    // The common bilinear case: the yielding points' returns are solved together.
+    detail::LinearPlaneStressBatch batch(sxx, syy, sxy, eps_p, dzz);
+    for (std::size_t p = 0; p < n; ++p) {
+      const double x = sxx[p], y = syy[p], t = sxy[p];
+      const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+      const double sy_n = h.value(eps_p[p]);
+      if (psi2 > sy_n * sy_n)
+        batch.add(p, young, nu, h.sigy, h.hp, x + y, x - y, t, std::sqrt(psi2));
+    }
+    return;
+  }
   const double a = 0.5 * young / (1.0 - nu);
   const double b = 1.5 * young / (1.0 + nu);
   const double nu_e = nu / young;
@@ -145,9 +159,10 @@ void shell_update(const core::PowerLawPlasticity& m, std::size_t n, const ShellP
   shell_j2(m, n, pts);
 }
 
-// Point by point with the constants at each point's temperature: the elastic trial and the
-// plane-stress return of *MAT_024, on arrays shifted to the point.
+// Point by point with the constants at each point's temperature: the elastic trial on arrays
+// shifted to the point, then the yielding points' plane-stress returns of *MAT_024 together.
 void shell_update(const core::ElasticPlasticThermal& m, std::size_t n, const ShellPoints& pts) {
+  detail::LinearPlaneStressBatch batch(pts.sxx, pts.syy, pts.sxy, pts.eps_p, pts.dzz);
   for (std::size_t p = 0; p < n; ++p) {
     const ThermalPlasticConstants c = constants_at(m, pts.temperature[p]);
     const double nu = c.poisson;
@@ -156,8 +171,11 @@ void shell_update(const core::ElasticPlasticThermal& m, std::size_t n, const She
                                 pts.dxx + p, pts.dyy + p, pts.dxy + p, pts.dyz + p, pts.dzx + p,
                                 pts.sxx + p, pts.syy + p, pts.sxy + p, pts.syz + p, pts.szx + p,
                                 pts.dzz + p);
-    plane_stress_return_kernel(detail::LinearHardening{c.sigy, c.hardening}, c.young, nu, 1,
-                               pts.sxx + p, pts.syy + p, pts.sxy + p, pts.eps_p + p, pts.dzz + p);
+    const double x = pts.sxx[p], y = pts.syy[p], t = pts.sxy[p];
+    const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+    const double sy_n = c.sigy + c.hardening * pts.eps_p[p];
+    if (psi2 > sy_n * sy_n)
+      batch.add(p, c.young, nu, c.sigy, c.hardening, x + y, x - y, t, std::sqrt(psi2));
   }
 }
 

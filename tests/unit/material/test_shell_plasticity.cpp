@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "plasticity_helpers.hpp"
+#include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material::test {
 namespace {
@@ -158,6 +159,115 @@ TEST(ShellJ2, ElasticBelowYield) {
   for (int k = 0; k < 5; ++k)
     EXPECT_DOUBLE_EQ(se.s[static_cast<std::size_t>(k)], st.s[static_cast<std::size_t>(k)]);
   EXPECT_DOUBLE_EQ(dzz_e, dzz);
+}
+
+// A chunk of many points in one call: the yielding points' returns are solved together
+// (plane_stress_batch.hpp). Each point must come out as it does alone (the same bits, whatever
+// shares its batch), and each must satisfy the discrete plane-stress problem (check_return).
+// Increments up to 1 (5000 yield strains) test the lockstep Newton far from its usual few steps.
+struct ShellChunk {
+  std::vector<double> d[5], s[5], eps_p, dzz, temperature;
+  explicit ShellChunk(std::size_t n) : eps_p(n), dzz(n), temperature(n) {
+    for (auto& v : d)
+      v.assign(n, 0.0);
+    for (auto& v : s)
+      v.assign(n, 0.0);
+  }
+  ShellPoints points() {
+    ShellPoints p{d[0].data(), d[1].data(), d[2].data(), d[3].data(), d[4].data(),  s[0].data(),
+                  s[1].data(), s[2].data(), s[3].data(), s[4].data(), eps_p.data(), dzz.data()};
+    p.temperature = temperature.data();
+    return p;
+  }
+};
+
+template <class M>
+void check_chunk_against_single_points(const M& m, const char* name) {
+  constexpr std::size_t n = 150;  // several batches, the last one partial
+  ShellChunk c(n);
+  std::vector<ShellState> alone(n);
+  std::vector<ShellInc> inc(n);
+  unsigned seed = 12345u;
+  auto uniform = [&seed]() {  // in [-1, 1), a fixed sequence
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<double>(seed >> 8) / static_cast<double>(1u << 23) - 1.0;
+  };
+  for (std::size_t p = 0; p < n; ++p) {
+    const double mag = p % 11 == 0  ? 1.0
+                       : p % 7 == 0 ? 0.05
+                                    : (p % 3 == 0 ? 2e-4 : 3e-3);  // elastic ones too
+    inc[p] = {mag * uniform(), mag * uniform(), mag * uniform(), 1e-4 * uniform(), 0.0};
+    alone[p].eps_p = p % 2 == 0 ? 0.0 : 0.03 * (1.0 + uniform());
+    // A prior state on or inside the yield surface.
+    shell_step(m, alone[p], {2e-3 * uniform(), 2e-3 * uniform(), 1e-3 * uniform(), 0.0, 0.0});
+    for (std::size_t k = 0; k < 5; ++k) {
+      c.d[k][p] = inc[p][k];
+      c.s[k][p] = alone[p].s[k];
+    }
+    c.eps_p[p] = alone[p].eps_p;
+  }
+  const std::vector<ShellState> before = alone;
+  shell_update(m, n, c.points());
+  double worst[3] = {0.0, 0.0, 0.0};
+  int yielded = 0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double dzz = shell_step(m, alone[p], inc[p]);
+    for (std::size_t k = 0; k < 5; ++k)
+      ASSERT_EQ(c.s[k][p], alone[p].s[k]) << name << " point " << p << " component " << k;
+    ASSERT_EQ(c.eps_p[p], alone[p].eps_p) << name << " point " << p;
+    ASSERT_EQ(c.dzz[p], dzz) << name << " point " << p;
+    if (alone[p].eps_p > before[p].eps_p) {
+      ++yielded;
+      check_return(m, before[p], inc[p], worst);
+    }
+  }
+  EXPECT_GT(yielded, 60);
+  EXPECT_LT(yielded, static_cast<int>(n));
+  std::printf(
+      "[%s] %d of %zu points yield in one chunk; worst: yield function %.2e, normality "
+      "%.2e, dzz %.2e\n",
+      name, yielded, n, worst[0], worst[1], worst[2]);
+}
+
+TEST(ShellJ2, ManyPointsInOneChunkReturnAsEachAlone) {
+  check_chunk_against_single_points(bilinear_law(), "MAT_024 bilinear");
+  check_chunk_against_single_points(curve_law(), "MAT_024 curve");
+}
+
+// *MAT_ELASTIC_PLASTIC_THERMAL at each point's own temperature: the same stress, plastic strain
+// and thickness strain as the bilinear *MAT_024 with the constants interpolated by hand at that
+// temperature, for a chunk whose points sit at different temperatures.
+TEST(ShellJ2, ThermalChunkMatchesTheBilinearLawAtEachTemperature) {
+  core::ElasticPlasticThermal m;
+  m.density = 7.85e-9;
+  m.temperature = {20.0, 300.0};
+  m.young = {210000.0, 150000.0};
+  m.poisson = {0.30, 0.34};
+  m.alpha = {1.2e-5, 1.4e-5};
+  m.sigy = {300.0, 120.0};
+  m.etan = {2000.0, 500.0};
+  constexpr std::size_t n = 40;
+  ShellChunk c(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    c.temperature[p] = 20.0 + 280.0 * static_cast<double>(p) / (n - 1);
+    c.d[0][p] = 4e-3;
+    c.d[1][p] = -1e-3 + 1e-4 * static_cast<double>(p % 5);
+    c.d[2][p] = 5e-4 * static_cast<double>(p % 3);
+  }
+  shell_update(m, n, c.points());
+  for (std::size_t p = 0; p < n; ++p) {
+    const double w = (c.temperature[p] - 20.0) / 280.0;
+    const auto at = [w](const std::vector<double>& v) { return v[0] + w * (v[1] - v[0]); };
+    const core::PiecewiseLinearPlasticity ref{m.density,  at(m.young), at(m.poisson),
+                                              at(m.sigy), at(m.etan),  {}};
+    ShellState st;
+    const double dzz = shell_step(ref, st, {c.d[0][p], c.d[1][p], c.d[2][p], 0.0, 0.0});
+    ASSERT_GT(st.eps_p, 0.0) << p;
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_NEAR(c.s[k][p], st.s[k], 1e-9 * ref.sigy) << p << " " << k;
+    EXPECT_NEAR(c.eps_p[p], st.eps_p, 1e-12) << p;
+    EXPECT_NEAR(c.dzz[p], dzz, 1e-12) << p;
+  }
 }
 
 // Uniaxial stress along x in increments: dyy solved each step so that syy = 0 (dxy = 0 keeps
