@@ -37,7 +37,16 @@ struct WorkItem {
 template <class Block>
 void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,
                 std::vector<std::vector<WorkItem>>& phases) {
-  constexpr std::size_t kItem = 64;  // small enough to balance two threads on a colour
+  // Items of up to 64 elements, but at least 8 per colour where the colour allows (in steps
+  // of 16, the kernels' lane width): the colours of a small part (a few hundred shells: four
+  // colours of some 80) would otherwise make one or two items each, and one thread would run
+  // the whole element loop while the others wait. The item size depends on the colour's size
+  // only, never on the thread count, so the books sum in the same order on any thread count.
+  static constexpr std::size_t kLanes = 16, kMaxItem = 64, kItemsWanted = 8;
+  const auto item_size = [](std::size_t colour_size) {
+    const std::size_t even = (colour_size + kItemsWanted - 1) / kItemsWanted;
+    return std::clamp((even + kLanes - 1) / kLanes * kLanes, kLanes, kMaxItem);
+  };
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     // Rigid parts move with their body: no internal forces, no stable step.
     if (std::holds_alternative<core::RigidMaterial>(
@@ -47,8 +56,9 @@ void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool
     const std::vector<std::size_t>& start = blocks[b].colour_start;
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       std::vector<WorkItem> phase;
-      for (std::size_t e = start[c]; e < start[c + 1]; e += kItem) {
-        phase.push_back({shell, b, e, std::min(start[c + 1], e + kItem)});
+      const std::size_t item = item_size(start[c + 1] - start[c]);
+      for (std::size_t e = start[c]; e < start[c + 1]; e += item) {
+        phase.push_back({shell, b, e, std::min(start[c + 1], e + item)});
       }
       if (!phase.empty())
         phases.push_back(std::move(phase));
@@ -614,7 +624,7 @@ void Simulation::State::internal(double dt_step) {
   {
     for (std::size_t p = 0; p < phases.size(); ++p) {
       const std::vector<WorkItem>& phase = phases[p];
-#pragma omp for schedule(dynamic, 2)
+#pragma omp for schedule(dynamic, 1)
       for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
         const WorkItem& it = phase[static_cast<std::size_t>(w)];
         ItemResult& out = item_results[phase_offset[p] + static_cast<std::size_t>(w)];
