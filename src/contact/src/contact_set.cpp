@@ -969,9 +969,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     update_master_normals(pr, packed);
   if (!cp.slave_face_start.empty() && dt > 0.0)
     update_slave_normals(pr, packed);
-  // Chunks of 32 dealt in turn: the nodes in contact (the costly ones) lie together in the
-  // slave list, so halves would load one thread.
-#pragma omp parallel for schedule(static, 32)
+#pragma omp parallel for schedule(static)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     const core::Index node = cp.slave_nodes[k];
@@ -1302,7 +1300,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     in.dt = dt;
     // The law is immutable and every node's update independent: chunks of the batch run in
     // parallel (same arithmetic per node, so the same bits for any thread count).
-    constexpr std::size_t kLawChunk = 256;  // a pass of a few hundred nodes still splits
+    constexpr std::size_t kLawChunk = 4096;
     const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
 #pragma omp parallel for schedule(static)
     for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
@@ -1329,7 +1327,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
 
     // Forces from the tractions, and the second half of the step's work.
-#pragma omp parallel for schedule(static, 32)
+#pragma omp parallel for schedule(static)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
       const auto k = static_cast<std::size_t>(lk);
       double* f = &pr.force[3 * k];
