@@ -8,6 +8,7 @@ Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--n N] [--core-n N] [--depth D] [--full]
                         [--interface two-way|one-way|tiebreak] [--skin-elform 16|2]
+                        [--shell-bulk-viscosity]
                         [--set NAME=VALUE] [--end T] [--name NAME]
 
 The tools are the square cup's (examples/square_cup: punch 70 mm square, die opening
@@ -93,6 +94,9 @@ VDC = 10.0
 TOOL_VDC = 20.0
 HG_QM = 0.03  # the skins' stiffness hourglass control (IHQ 4) with --skin-elform 2
 SKIN_ELFORM = 16  # the skins' shells: 16 fully integrated (default) or 2 Belytschko-Tsay
+# --shell-bulk-viscosity: *CONTROL_BULK_VISCOSITY TYPE -2 (LS-DYNA's defaults Q1 1.5, Q2 0.06),
+# the bulk viscosity in the shells' membrane too (docs/materials.md), its work booked.
+SHELL_BULK = False
 TUNABLE = ("HOLDER_FORCE", "FRICTION", "T_BLANK", "T_TOOL", "H_TOOL", "H_INTERFACE", "CN", "CT",
            "SMAX_LO", "SMAX_HI", "T_LO", "T_HI", "ZETA_LO", "ZETA_HI", "MU_LO", "MU_HI", "VDC",
            "HG_QM", "SPEED", "TSF")
@@ -182,6 +186,8 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="one-way", end_tim
     # penalty (docs/contact.md), the tools' contacts LS-DYNA's default.
     k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 0), card(0), card(0.0), card(0, 1)]
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9)]
+    if SHELL_BULK:
+        k += ["*CONTROL_BULK_VISCOSITY\n", card(1.5, 0.06, -2)]
     k += ["*CONTROL_SOLUTION\n", card(2)]
     #     ATYPE PTYPE SOLVER CGTOL GPT EQHEAT FWORK; card 2: TSF in columns 71-80
     k += ["*CONTROL_THERMAL_SOLVER\n", card(1, 0, 11, 0.0, 8, 1.0, 0.9),
@@ -311,6 +317,8 @@ def main(argv):
     ap.add_argument("--end", type=float, default=None, help="end time (default: the stroke's)")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help=f"one of {', '.join(TUNABLE)}")
+    ap.add_argument("--shell-bulk-viscosity", action="store_true",
+                    help="*CONTROL_BULK_VISCOSITY TYPE -2: bulk viscosity in the shells too")
     ap.add_argument("--name", default=None)
     a = ap.parse_args(argv)
     for item in a.set:
@@ -319,6 +327,7 @@ def main(argv):
             ap.error(f"--set takes NAME=VALUE with NAME one of {', '.join(TUNABLE)}")
         globals()[key] = float(value)
     globals()["SKIN_ELFORM"] = a.skin_elform
+    globals()["SHELL_BULK"] = a.shell_bulk_viscosity
     if a.n < 4 or a.n % 2:
         ap.error("--n is an even number of at least 4")
     outdir, name, n, core_n, depth, full, interface, end_time = (

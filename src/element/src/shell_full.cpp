@@ -30,7 +30,7 @@ template <class M>
 ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                  const NodalView& nv, const NodalSpin& spin, double dt, std::size_t begin,
                  std::size_t end, const NodalForces& out, const NodalMoments& mom,
-                 double wave_speed) {
+                 double wave_speed, double rho) {
   using Law = LawOf<M>;
   ShellResult r;
   const int nip = st.nip;
@@ -49,6 +49,8 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
   const bool expands = thermal && !block.expansion.x.empty();
   const bool plastic_heat = out.plastic_work != nullptr;
+  const bool bulk_on =
+      block.bulk_viscosity_on && (block.bulk_viscosity.q1 != 0.0 || block.bulk_viscosity.q2 != 0.0);
   // Stress work per unit volume of Gauss point g's column (as the BT kernel's point_work: the
   // transverse shear with the unscaled shear rate, the shear factor scaling only the stiffness).
   const auto column_work = [&](std::size_t q0, std::size_t g) {
@@ -84,11 +86,7 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
     }
     st.area[e] = g.area;
     const bool triangle = cn[2] == cn[3];
-    const double dte = st.dt_factor[e] * characteristic_length(x, g.area, triangle) / wave_speed;
-    if (dte < r.dt_min) {
-      r.dt_min = dte;
-      r.dt_element = e;
-    }
+    const double length = characteristic_length(x, g.area, triangle);
     double vl[4][3], wl[4][2];
     for (int i = 0; i < 4; ++i) {
       vl[i][0] = v[i][0] * g.e1[0] + v[i][1] * g.e1[1] + v[i][2] * g.e1[2];
@@ -212,6 +210,31 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         }
       }
     }
+    // Bulk viscosity (*CONTROL_BULK_VISCOSITY TYPE -1/-2), as the BT kernel's but at each Gauss
+    // point on its own in-plane compression tr D = d11 + d22 < 0 (the mapped rate), with
+    // l = sqrt(A) of the element: q = rho l |tr D| (Q1 l |tr D| + Q2 c) lowers the point's
+    // membrane resultants N11, N22 by q t, its work q |tr D| t dA dt is internal energy, and the
+    // element's step is L / (Q + sqrt(Q^2 + c^2)) with the largest of its points' Q.
+    double bulk_q[4] = {0.0, 0.0, 0.0, 0.0};
+    double qv_max = 0.0;
+    if (bulk_on) {
+      const double l = std::sqrt(g.area);
+      for (std::size_t gp = 0; gp < 4; ++gp) {
+        const double rate = -dil[gp];
+        if (rate > 0.0) {
+          const double qv =
+              block.bulk_viscosity.q1 * l * rate + block.bulk_viscosity.q2 * wave_speed;
+          bulk_q[gp] = rho * l * qv * rate;
+          qv_max = std::max(qv_max, qv);
+        }
+      }
+    }
+    const double dte =
+        st.dt_factor[e] * length / (qv_max + std::sqrt(qv_max * qv_max + wave_speed * wave_speed));
+    if (dte < r.dt_min) {
+      r.dt_min = dte;
+      r.dt_element = e;
+    }
     double work_old[4];
     for (std::size_t gp = 0; gp < 4; ++gp)
       work_old[gp] = column_work(q0, gp);
@@ -333,6 +356,11 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       // Midpoint rule on the point's mid-step volume, as the BT kernel books its one point.
       const double mid_volume = t * (1.0 + 0.5 * tz) * da * (1.0 - 0.5 * dt * dil[gp]);
       r.internal_energy += 0.5 * (work_old[gp] + column_work(q0, gp)) * 0.5 * mid_volume;
+      if (bulk_q[gp] > 0.0) {
+        nxx -= bulk_q[gp] * t;
+        nyy -= bulk_q[gp] * t;
+        r.internal_energy += bulk_q[gp] * (-dil[gp]) * t * da * dt;
+      }
       for (int i = 0; i < 4; ++i) {
         const double nx = bx[gp][i], ny = by[gp][i];
         fl[i][0] += da * (nx * nxx + ny * nxy);
@@ -387,11 +415,12 @@ ShellResult shell_full_forces(const core::ShellBlock& block, const core::Materia
                               double dt, std::size_t begin, std::size_t end,
                               const NodalForces& forces, const NodalMoments& moments) {
   const double c = plate_wave_speed(material);
+  const double rho = material::density(material);
   return std::visit(
       [&](const auto& m) {
         using M = std::decay_t<decltype(m)>;
         if constexpr (LawOf<M>::for_shells) {
-          return full(block, m, state, nodes, spin, dt, begin, end, forces, moments, c);
+          return full(block, m, state, nodes, spin, dt, begin, end, forces, moments, c, rho);
         } else {
           ShellResult r;  // setup::build admits only the shell laws
           r.failed = true;

@@ -269,15 +269,7 @@ struct Builder {
           b.rule = core::ThicknessRule::lobatto;
         }
         // *CONTROL_BULK_VISCOSITY TYPE -1 or -2 puts the bulk viscosity in the shells too.
-        b.bulk_viscosity_on = !fully_integrated && d.bulk_viscosity && d.bulk_viscosity->type < 0;
-        if (fully_integrated && d.bulk_viscosity && d.bulk_viscosity->type < 0)
-          out.warnings.push_back(
-              {p.where, "*PART", "SECID",
-               "part " + std::to_string(p.id) +
-                   ": the shells' bulk viscosity (*CONTROL_BULK_VISCOSITY TYPE " +
-                   std::to_string(d.bulk_viscosity->type) +
-                   ") is not in the fully integrated shell (ELFORM 16) yet; its part runs "
-                   "without it"});
+        b.bulk_viscosity_on = d.bulk_viscosity && d.bulk_viscosity->type < 0;
         b.bulk_viscosity = bulk_viscosity_of(p);
         shell_block_of_part.emplace(p.id, m.shell_blocks.size());
         m.shell_blocks.push_back(std::move(b));
