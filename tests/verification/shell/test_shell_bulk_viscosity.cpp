@@ -1,6 +1,7 @@
 // The shells' bulk viscosity (*CONTROL_BULK_VISCOSITY TYPE -1/-2) against its closed form: one
-// Belytschko-Tsay (and one fully integrated, ELFORM 16) square (L0 = 2 mm, t = 0.1 mm) squeezed in equal biaxial strain by its edges
-// moving in at a constant speed V: tr D = -2 V / L, so the pressure is
+// Belytschko-Tsay (and one fully integrated, ELFORM 16) square (L0 = 2 mm, t = 0.1 mm)
+// squeezed in equal biaxial strain by its edges moving in at a constant speed V:
+// tr D = -2 V / L, so the pressure is
 // q = rho l (2 V / L) (Q1 l 2 V / L + Q2 c) with l = sqrt(A) = L and c the plate wave speed
 // sqrt(E / (rho (1 - nu^2))). The moving edge's reaction is the membrane force: the elastic
 // stress of equal biaxial plane stress, E / (1 - nu) ln(L0 / L) (hypoelastic: the log strain),
