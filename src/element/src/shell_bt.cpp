@@ -8,6 +8,7 @@
 #include "plyform/material/law_registry.hpp"
 #include "plyform/material/shell.hpp"
 #include "shell_common.hpp"
+#include "shell_stages.hpp"
 
 namespace plyform::element {
 namespace {
@@ -19,11 +20,14 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
                const NodalView& nv, const NodalSpin& spin, double dt, std::size_t begin,
                std::size_t end, const NodalForces& out, const NodalMoments& mom, double wave_speed,
                double rho) {
+  using Law = LawOf<M>;
   ShellResult r;
   const int nip = st.nip;
+  const auto unip = static_cast<std::size_t>(nip);
   double zeta[kMaxNip], weight[kMaxNip];
   thickness_rule(block.rule, nip, zeta, weight);
   const double kappa = block.shear_factor;
+  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
   const double qm = block.hourglass.qm;
   const bool stiffness_hg = block.hourglass.ihq >= 4;
   const double e_plate = rho * wave_speed * wave_speed;  // E / (1 - nu^2)
@@ -31,107 +35,29 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   // Elements go in chunks: the kinematics of each element first, then one material call for
   // all the chunk's points (the law's loops then run over many points), then the forces.
   constexpr std::size_t kChunk = 16;
-  constexpr std::size_t kPoints = kChunk * static_cast<std::size_t>(kMaxNip);
-  double pdxx[kPoints], pdyy[kPoints], pdxy[kPoints], pdyz[kPoints], pdzx[kPoints];
-  double pdzz[kPoints], pcos[kPoints], psin[kPoints], pspin[kPoints];
-  double pmspin[kPoints], pturn[kPoints];  // laws that keep material lines (needs_frame_turn)
-  // Temperature (thermal blocks) and the plastic strain before the law (plastic work heat).
-  double ptemp[kPoints], peps0[kPoints], peth[kPoints];
+  ChunkFrames<kChunk> f;
+  PointBuffers<kChunk* static_cast<std::size_t>(kMaxNip)> b;
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
   const bool expands = thermal && !block.expansion.x.empty();
   const bool plastic_heat = out.plastic_work != nullptr;
-  Geometry gk[kChunk];
-  double vlk[kChunk][4][3], wlk[kChunk][4][3], tk[kChunk];
   // Bulk viscosity of the membrane (TYPE -1/-2): its pressure and the compression rate.
   const bool bulk_on =
       block.bulk_viscosity_on && (block.bulk_viscosity.q1 != 0.0 || block.bulk_viscosity.q2 != 0.0);
-  double bulk_q[kChunk], bulk_rate[kChunk];
-  const auto unip = static_cast<std::size_t>(nip);
-  alignas(64) double LX[4][kChunk], LY[4][kChunk], LZ[4][kChunk];
-  alignas(64) double LVX[4][kChunk], LVY[4][kChunk], LVZ[4][kChunk];
-  alignas(64) double LWX[4][kChunk], LWY[4][kChunk], LWZ[4][kChunk];
-  alignas(64) double E[9][kChunk], XL[4][kChunk], YL[4][kChunk], B1[4][kChunk], B2[4][kChunk];
-  alignas(64) double VL[12][kChunk], WL[12][kChunk], RATE[9][kChunk];
+  double bulk_q[kChunk], bulk_rate[kChunk], tk[kChunk], work_old[kChunk];
+  alignas(64) double B1[4][kChunk], B2[4][kChunk], RATE[9][kChunk];
   alignas(64) double MSPIN[kChunk], FTURN[kChunk];
-  alignas(64) double AREA[kChunk], LEN[kChunk], TRI[kChunk];
-  double work_old[kChunk];
-  // Stress work of an element's thickness points over the step per unit area, for stresses
-  // q0.. and strain increments at0..: sigma : d_eps with the transverse shear as the element's
-  // forces see it (the resultant times the unscaled shear rate: the shear factor only scales
-  // the stiffness).
-  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
-  const auto point_work = [&](const ShellBlockState& sb, std::size_t q0, std::size_t at0) {
-    double w = 0.0;
-    for (int k = 0; k < nip; ++k) {
-      const std::size_t q = q0 + static_cast<std::size_t>(k),
-                        at = at0 + static_cast<std::size_t>(k);
-      w +=
-          weight[k] * (sb.s[0][q] * pdxx[at] + sb.s[1][q] * pdyy[at] + 2.0 * sb.s[2][q] * pdxy[at] +
-                       2.0 * inv_kappa * (sb.s[3][q] * pdyz[at] + sb.s[4][q] * pdzx[at]));
-    }
-    return w;
-  };
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
     const std::size_t chunk = std::min(kChunk, end - c0);
-    // Stage A, lane-wise over the chunk (vectorised across elements): gather, co-rotational
-    // frame, local coordinates and gradients, local velocities, rates. Padding lanes repeat
-    // the chunk's first element; their results are dropped.
+    // Stage A, lane-wise over the chunk (vectorised across elements): the frames, then the
+    // gradients at the centre and the rates.
+    chunk_frames(block, nv, spin, c0, chunk, f);
     for (std::size_t k = 0; k < kChunk; ++k) {
-      const core::Index* cn = &block.connectivity[4 * (c0 + (k < chunk ? k : 0))];
+      double xl[4], yl[4];
       for (int i = 0; i < 4; ++i) {
-        const auto n = static_cast<std::size_t>(cn[i]);
-        const double* pk = nv.packed + 6 * n;
-        LX[i][k] = pk[0];
-        LY[i][k] = pk[1];
-        LZ[i][k] = pk[2];
-        LVX[i][k] = pk[3];
-        LVY[i][k] = pk[4];
-        LVZ[i][k] = pk[5];
-        LWX[i][k] = spin.wx[n];
-        LWY[i][k] = spin.wy[n];
-        LWZ[i][k] = spin.wz[n];
+        xl[i] = f.xl[i][k];
+        yl[i] = f.yl[i][k];
       }
-      TRI[k] = cn[2] == cn[3] ? 2.0 : 1.0;
-    }
-    for (std::size_t k = 0; k < kChunk; ++k) {
-      const double r31x = LX[2][k] - LX[0][k], r31y = LY[2][k] - LY[0][k],
-                   r31z = LZ[2][k] - LZ[0][k];
-      const double r42x = LX[3][k] - LX[1][k], r42y = LY[3][k] - LY[1][k],
-                   r42z = LZ[3][k] - LZ[1][k];
-      double nx = r31y * r42z - r31z * r42y, ny = r31z * r42x - r31x * r42z,
-             nz = r31x * r42y - r31y * r42x;
-      const double ninv = 1.0 / std::sqrt(nx * nx + ny * ny + nz * nz);
-      nx *= ninv, ny *= ninv, nz *= ninv;
-      double sx = 0.5 * (LX[1][k] + LX[2][k] - LX[0][k] - LX[3][k]);
-      double sy = 0.5 * (LY[1][k] + LY[2][k] - LY[0][k] - LY[3][k]);
-      double sz = 0.5 * (LZ[1][k] + LZ[2][k] - LZ[0][k] - LZ[3][k]);
-      const double sn = sx * nx + sy * ny + sz * nz;
-      sx -= sn * nx, sy -= sn * ny, sz -= sn * nz;
-      const double sinv = 1.0 / std::sqrt(sx * sx + sy * sy + sz * sz);
-      const double e1x = sx * sinv, e1y = sy * sinv, e1z = sz * sinv;
-      const double e2x = ny * e1z - nz * e1y, e2y = nz * e1x - nx * e1z, e2z = nx * e1y - ny * e1x;
-      E[0][k] = e1x, E[1][k] = e1y, E[2][k] = e1z;
-      E[3][k] = e2x, E[4][k] = e2y, E[5][k] = e2z;
-      E[6][k] = nx, E[7][k] = ny, E[8][k] = nz;
-      const double cx = 0.25 * (LX[0][k] + LX[1][k] + LX[2][k] + LX[3][k]);
-      const double cy = 0.25 * (LY[0][k] + LY[1][k] + LY[2][k] + LY[3][k]);
-      const double cz = 0.25 * (LZ[0][k] + LZ[1][k] + LZ[2][k] + LZ[3][k]);
-      double xl[4], yl[4], lmax2 = 0.0;
-      for (int i = 0; i < 4; ++i) {
-        const double rx = LX[i][k] - cx, ry = LY[i][k] - cy, rz = LZ[i][k] - cz;
-        xl[i] = rx * e1x + ry * e1y + rz * e1z;
-        yl[i] = rx * e2x + ry * e2y + rz * e2z;
-        XL[i][k] = xl[i];
-        YL[i][k] = yl[i];
-        const int j = (i + 1) % 4;
-        const double dx = LX[j][k] - LX[i][k], dy = LY[j][k] - LY[i][k], dz = LZ[j][k] - LZ[i][k];
-        lmax2 = std::max(lmax2, dx * dx + dy * dy + dz * dz);
-      }
-      const double area =
-          0.5 * ((xl[2] - xl[0]) * (yl[3] - yl[1]) + (xl[1] - xl[3]) * (yl[2] - yl[0]));
-      AREA[k] = area;
-      LEN[k] = TRI[k] * area / std::sqrt(lmax2);
-      const double inv2a = 0.5 / area;
+      const double inv2a = 0.5 / f.area[k];
       double b1[4], b2[4];
       b1[0] = (yl[1] - yl[3]) * inv2a;
       b1[1] = (yl[2] - yl[0]) * inv2a;
@@ -143,20 +69,11 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       b2[3] = (xl[2] - xl[0]) * inv2a;
       double dxx = 0, dyy = 0, lxy = 0, lyx = 0, kx = 0, ky = 0, kxy = 0, gxz = 0, gyz = 0;
       double thx = 0, thy = 0;
-      double vx_loc[4], vy_loc[4];
       for (int i = 0; i < 4; ++i) {
         B1[i][k] = b1[i];
         B2[i][k] = b2[i];
-        const double vxl = LVX[i][k] * e1x + LVY[i][k] * e1y + LVZ[i][k] * e1z;
-        const double vyl = LVX[i][k] * e2x + LVY[i][k] * e2y + LVZ[i][k] * e2z;
-        const double vzl = LVX[i][k] * nx + LVY[i][k] * ny + LVZ[i][k] * nz;
-        const double wxl = LWX[i][k] * e1x + LWY[i][k] * e1y + LWZ[i][k] * e1z;
-        const double wyl = LWX[i][k] * e2x + LWY[i][k] * e2y + LWZ[i][k] * e2z;
-        const double wzl = LWX[i][k] * nx + LWY[i][k] * ny + LWZ[i][k] * nz;
-        VL[3 * i][k] = vxl, VL[3 * i + 1][k] = vyl, VL[3 * i + 2][k] = vzl;
-        WL[3 * i][k] = wxl, WL[3 * i + 1][k] = wyl, WL[3 * i + 2][k] = wzl;
-        vx_loc[i] = vxl;
-        vy_loc[i] = vyl;
+        const double vxl = f.vl[3 * i][k], vyl = f.vl[3 * i + 1][k], vzl = f.vl[3 * i + 2][k];
+        const double wxl = f.wl[3 * i][k], wyl = f.wl[3 * i + 1][k];
         // Membrane, bending and transverse shear rates at the centre (Mindlin kinematics:
         // u_x = u + z theta_y, u_y = v - z theta_x).
         dxx += b1[i] * vxl;
@@ -171,55 +88,27 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         thx += 0.25 * wxl;
         thy += 0.25 * wyl;
       }
-      // The mid-surface's velocity gradient in the frame, taken on the configuration at
-      // t_{n+1}, is mapped to the mid-step configuration, L_m = L (I - dt/2 L)^-1, as a whole
-      // 3 x 3 (Hughes-Winget): its third column is the turning of the normal (the nodes' mean
-      // spin: dv_x/dz = theta_y, dv_y/dz = -theta_x), its third row the out-of-plane slopes.
-      // A rigid rotation about any axis then gives an exactly skew L_m: no spurious membrane
-      // strain however far and fast the shell turns. (The in-plane 2 x 2 block alone is exact
-      // for turning in the plane only: a shell tumbling about an in-plane axis saw a stretch
-      // rate of omega^2 dt / 2 and gained energy.)
-      const double h2 = 0.5 * dt;
-      const double l3[3][3] = {{dxx, lxy, -gxz}, {lyx, dyy, -gyz}, {gxz, gyz, 0.0}};
-      double m3[3][3];
-      for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col)
-          m3[row][col] = (row == col ? 1.0 : 0.0) - h2 * l3[row][col];
-      // Inverse by cofactors (m3 is within dt |L| of the identity: never singular).
-      const double c00 = m3[1][1] * m3[2][2] - m3[1][2] * m3[2][1];
-      const double c01 = m3[1][2] * m3[2][0] - m3[1][0] * m3[2][2];
-      const double c02 = m3[1][0] * m3[2][1] - m3[1][1] * m3[2][0];
-      const double idet = 1.0 / (m3[0][0] * c00 + m3[0][1] * c01 + m3[0][2] * c02);
-      const double inv[3][2] = {{c00 * idet, (m3[0][2] * m3[2][1] - m3[0][1] * m3[2][2]) * idet},
-                                {c01 * idet, (m3[0][0] * m3[2][2] - m3[0][2] * m3[2][0]) * idet},
-                                {c02 * idet, (m3[0][1] * m3[2][0] - m3[0][0] * m3[2][1]) * idet}};
-      // The in-plane block of L_m (its first two columns suffice).
-      double am[2][2];
-      for (int row = 0; row < 2; ++row)
-        for (int col = 0; col < 2; ++col)
-          am[row][col] =
-              l3[row][0] * inv[0][col] + l3[row][1] * inv[1][col] + l3[row][2] * inv[2][col];
-      const double a00 = am[0][0], a01 = am[0][1], a10 = am[1][0], a11 = am[1][1];
+      // The mid-surface's velocity gradient at the centre (its third column the nodes' mean
+      // spin: dv_x/dz = theta_y, dv_y/dz = -theta_x) on the mid-step configuration.
+      const InPlaneRate am = mid_step_rate(dxx, lxy, lyx, dyy, gxz, gyz, dt);
       // The stored stresses turn with the frame (they are its components); the material's spin
       // W = (L_yx - L_xy) / 2 differs from the frame's own spin, that of the mid-side vector
-      // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back
-      // (Jaumann relative to the frame), so the result does not depend on which edges the
-      // frame follows, i.e. on the node numbering.
+      // s1 = (x2 + x3 - x1 - x4) / 2 it follows. The difference turns the stresses back.
       const double s1x = 0.5 * (xl[1] + xl[2] - xl[0] - xl[3]);
-      const double s1v = 0.5 * (vy_loc[1] + vy_loc[2] - vy_loc[0] - vy_loc[3]);
-      RATE[0][k] = a00;
-      RATE[1][k] = a11;
-      RATE[2][k] = a01 + a10;
+      const double s1v = 0.5 * (f.vl[4][k] + f.vl[7][k] - f.vl[1][k] - f.vl[10][k]);
+      RATE[0][k] = am.a00;
+      RATE[1][k] = am.a11;
+      RATE[2][k] = am.a01 + am.a10;
       RATE[3][k] = kx;
       RATE[4][k] = ky;
       RATE[5][k] = kxy;
       RATE[6][k] = gxz + thy;
       RATE[7][k] = gyz - thx;
-      RATE[8][k] = (0.5 * (a10 - a01) - s1v / s1x) * dt;
-      if constexpr (material::law_needs_frame_turn<LawOf<M>>()) {
+      RATE[8][k] = (0.5 * (am.a10 - am.a01) - s1v / s1x) * dt;
+      if constexpr (material::law_needs_frame_turn<Law>()) {
         // s1 at t_n was s1 - dt ds1/dt: the frame turned through atan of this, exactly.
-        const double s1u = 0.5 * (vx_loc[1] + vx_loc[2] - vx_loc[0] - vx_loc[3]);
-        MSPIN[k] = 0.5 * (a10 - a01) * dt;
+        const double s1u = 0.5 * (f.vl[3][k] + f.vl[6][k] - f.vl[0][k] - f.vl[9][k]);
+        MSPIN[k] = 0.5 * (am.a10 - am.a01) * dt;
         FTURN[k] = dt * s1v / (s1x - dt * s1u);
       }
     }
@@ -228,14 +117,14 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
       const double t = tk[k_el] = st.thickness[e];
-      const double area = AREA[k_el];
-      if (!(area > 0.0) || !(t > 0.0) || !std::isfinite(E[0][k_el] + E[6][k_el])) {
+      const double area = f.area[k_el];
+      if (!frame_usable(f, k_el, t)) {
         r.failed = true;
         r.failed_element = e;
         return r;
       }
       st.area[e] = area;
-      double dte = st.dt_factor[e] * LEN[k_el] / wave_speed;
+      double dte = st.dt_factor[e] * f.length[k_el] / wave_speed;
       bulk_q[k_el] = 0.0;
       if (bulk_on) {
         // The solids' form on the mid-surface's in-plane compression, tr D = d11 + d22 < 0,
@@ -248,202 +137,77 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
               block.bulk_viscosity.q1 * l * rate + block.bulk_viscosity.q2 * wave_speed;
           bulk_q[k_el] = rho * l * qv * rate;
           bulk_rate[k_el] = rate;
-          dte = st.dt_factor[e] * LEN[k_el] / (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
+          dte = st.dt_factor[e] * f.length[k_el] /
+                (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
         }
       }
       if (dte < r.dt_min) {
         r.dt_min = dte;
         r.dt_element = e;
       }
-      Geometry& g = gk[k_el];
-      for (int d = 0; d < 3; ++d) {
-        g.e1[d] = E[d][k_el];
-        g.e2[d] = E[3 + d][k_el];
-        g.e3[d] = E[6 + d][k_el];
-      }
-      for (int i = 0; i < 4; ++i) {
-        g.xl[i] = XL[i][k_el];
-        g.yl[i] = YL[i][k_el];
-        g.b1[i] = B1[i][k_el];
-        g.b2[i] = B2[i][k_el];
-        for (int d = 0; d < 3; ++d) {
-          vlk[k_el][i][d] = VL[3 * i + d][k_el];
-          wlk[k_el][i][d] = WL[3 * i + d][k_el];
-        }
-      }
-      g.area = area;
       const double phi = RATE[8][k_el];
-      if (phi != 0.0) {
-        // Cayley form of the rotation by phi: exactly orthogonal, no trigonometry.
-        const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-        const double c = (1.0 - half_sq) * inv, sn = phi * inv;
-        const std::size_t q0 = unip * e;
-        for (int k = 0; k < nip; ++k) {
-          const std::size_t q = q0 + static_cast<std::size_t>(k);
-          const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
-          st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
-          st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
-          st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
-          const double tzx = st.s[4][q], tyz = st.s[3][q];
-          st.s[4][q] = c * tzx - sn * tyz;
-          st.s[3][q] = sn * tzx + c * tyz;
-        }
-      }
+      turn_stresses(st, unip * e, unip, phi);
       // Strain increments at the thickness points (tensor shears; the shear factor scales the
       // transverse shear).
-      for (int k = 0; k < nip; ++k) {
+      const std::size_t at0 = k_el * unip;
+      for (std::size_t k = 0; k < unip; ++k) {
         const double z = 0.5 * t * zeta[k];
-        const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
-        pdxx[at] = (RATE[0][k_el] + z * RATE[3][k_el]) * dt;
-        pdyy[at] = (RATE[1][k_el] + z * RATE[4][k_el]) * dt;
-        pdxy[at] = 0.5 * (RATE[2][k_el] + z * RATE[5][k_el]) * dt;
-        pdyz[at] = 0.5 * kappa * RATE[7][k_el] * dt;
-        pdzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
+        const std::size_t at = at0 + k;
+        b.dxx[at] = (RATE[0][k_el] + z * RATE[3][k_el]) * dt;
+        b.dyy[at] = (RATE[1][k_el] + z * RATE[4][k_el]) * dt;
+        b.dxy[at] = 0.5 * (RATE[2][k_el] + z * RATE[5][k_el]) * dt;
+        b.dyz[at] = 0.5 * kappa * RATE[7][k_el] * dt;
+        b.dzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
       }
-      work_old[k_el] = point_work(st, unip * e, k_el * unip);
+      work_old[k_el] = column_work(st, b, unip * e, at0, unip, weight, inv_kappa);
       if (thermal) {
-        // The temperature of each thickness point: the element's mean of its nodes' (a
-        // triangle's three), through the thickness the quadratic profile of a thick thermal
-        // shell's bottom, middle and top (uniform for a thin one). Thermal expansion takes
-        // alpha(T_mid) dT off the in-plane increments the law sees (the stress work above and
-        // below counts the total strain: the forces do that work).
-        const core::Index* cn = &block.connectivity[4 * e];
-        const bool tri = cn[2] == cn[3];
-        const auto mean = [&](const double* tn) {
-          const auto n0 = static_cast<std::size_t>(cn[0]), n1 = static_cast<std::size_t>(cn[1]),
-                     n2 = static_cast<std::size_t>(cn[2]), n3 = static_cast<std::size_t>(cn[3]);
-          return tri ? (tn[n0] + tn[n1] + tn[n2]) / 3.0
-                     : 0.25 * (tn[n0] + tn[n1] + tn[n2] + tn[n3]);
-        };
-        const double t_mid = mean(nv.temperature);
-        const bool faces = nv.temperature_bottom != nullptr;
-        const double t_bottom = faces ? mean(nv.temperature_bottom) : t_mid;
-        const double t_top = faces ? mean(nv.temperature_top) : t_mid;
-        for (int k = 0; k < nip; ++k) {
-          const std::size_t at = k_el * unip + static_cast<std::size_t>(k);
-          const std::size_t q = unip * e + static_cast<std::size_t>(k);
-          const double z = zeta[k];
-          const double t_new =
-              0.5 * z * (z - 1.0) * t_bottom + (1.0 - z * z) * t_mid + 0.5 * z * (z + 1.0) * t_top;
-          peth[at] = 0.0;
-          if (dt > 0.0) {
-            const double t_old = st.temperature[q];
-            if (expands)
-              peth[at] = block.expansion(0.5 * (t_old + t_new)) * (t_new - t_old);
-            st.temperature[q] = t_new;
-          }
-          pdxx[at] -= peth[at];
-          pdyy[at] -= peth[at];
-          ptemp[at] = t_new;
-        }
-      }
-      const double x[4][3] = {{LX[0][k_el], LY[0][k_el], LZ[0][k_el]},
-                              {LX[1][k_el], LY[1][k_el], LZ[1][k_el]},
-                              {LX[2][k_el], LY[2][k_el], LZ[2][k_el]},
-                              {LX[3][k_el], LY[3][k_el], LZ[3][k_el]}};
-      if constexpr (LawOf<M>::needs_material_axes) {
-        // AOPT 0: axis a along the edge from node 1 to node 2; AOPT 2: the global vector a;
-        // AOPT 3: v x n; all projected on the shell. AOPT 0 and 3 then turn about the normal by
-        // the element card's BETA where it is not zero, else by the material's angle (MANGL).
-        const material::MaterialAxes axes = LawOf<M>::axes(mat);
-        double a3[3];
-        for (int d = 0; d < 3; ++d)
-          a3[d] = axes.aopt == 2 ? axes.a[d] : x[1][d] - x[0][d];
-        if (axes.aopt == 3) {
-          a3[0] = axes.v[1] * g.e3[2] - axes.v[2] * g.e3[1];
-          a3[1] = axes.v[2] * g.e3[0] - axes.v[0] * g.e3[2];
-          a3[2] = axes.v[0] * g.e3[1] - axes.v[1] * g.e3[0];
-        }
-        const double ax = a3[0] * g.e1[0] + a3[1] * g.e1[1] + a3[2] * g.e1[2];
-        const double ay = a3[0] * g.e2[0] + a3[1] * g.e2[1] + a3[2] * g.e2[2];
-        double angle = std::atan2(ay, ax);
-        if (axes.aopt != 2) {
-          const double beta = block.material_angle.empty() ? 0.0 : block.material_angle[e];
-          angle += beta != 0.0 ? beta : axes.angle;
-        }
+        // Thermal expansion takes alpha(T_mid) dT off the in-plane increments the law sees.
+        thickness_temperatures(block, nv, st, e, zeta, unip, dt, expands, &b.temperature[at0],
+                               &b.eth[at0]);
         for (std::size_t k = 0; k < unip; ++k) {
-          pcos[k_el * unip + k] = std::cos(angle);
-          psin[k_el * unip + k] = std::sin(angle);
+          b.dxx[at0 + k] -= b.eth[at0 + k];
+          b.dyy[at0 + k] -= b.eth[at0 + k];
         }
       }
-      if constexpr (material::law_needs_spin<LawOf<M>>()) {
-        for (std::size_t k = 0; k < unip; ++k)
-          pspin[k_el * unip + k] = phi;
-      }
-      if constexpr (material::law_needs_frame_turn<LawOf<M>>()) {
-        for (std::size_t k = 0; k < unip; ++k) {
-          pmspin[k_el * unip + k] = MSPIN[k_el];
-          pturn[k_el * unip + k] = FTURN[k_el];
-        }
-      }
-    }
-    {
-      const std::size_t q0 = unip * c0;
-      using Law = LawOf<M>;
-      constexpr std::size_t per_point = Law::history.size();
-      material::ShellPoints pts{pdxx,         pdyy,         pdxy,          pdyz,
-                                pdzx,         &st.s[0][q0], &st.s[1][q0],  &st.s[2][q0],
-                                &st.s[3][q0], &st.s[4][q0], &st.eps_p[q0], pdzz};
       if constexpr (Law::needs_material_axes) {
-        pts.cos_t = pcos;
-        pts.sin_t = psin;
+        const double d12[3] = {f.x[1][k_el] - f.x[0][k_el], f.y[1][k_el] - f.y[0][k_el],
+                               f.z[1][k_el] - f.z[0][k_el]};
+        const double e1[3] = {f.e[0][k_el], f.e[1][k_el], f.e[2][k_el]};
+        const double e2[3] = {f.e[3][k_el], f.e[4][k_el], f.e[5][k_el]};
+        const double e3[3] = {f.e[6][k_el], f.e[7][k_el], f.e[8][k_el]};
+        const double angle = material_angle<Law>(mat, block, e, d12, e1, e2, e3);
+        std::fill_n(&b.cos_t[at0], unip, std::cos(angle));
+        std::fill_n(&b.sin_t[at0], unip, std::sin(angle));
       }
-      if constexpr (per_point > 0)
-        pts.history = &st.history[per_point * q0];
-      if (thermal)
-        pts.temperature = ptemp;
       if constexpr (material::law_needs_spin<Law>())
-        pts.spin = pspin;
+        std::fill_n(&b.spin[at0], unip, phi);
       if constexpr (material::law_needs_frame_turn<Law>()) {
-        pts.material_spin = pmspin;
-        pts.frame_turn = pturn;
-      }
-      if (plastic_heat)
-        std::copy_n(&st.eps_p[q0], unip * chunk, peps0);
-      Law::update_shell(mat, unip * chunk, pts);
-      if (expands) {
-        // Back to the total increments (stress work), and the free thermal thickness strain.
-        for (std::size_t at = 0; at < unip * chunk; ++at) {
-          const double eth = peth[at];
-          pdxx[at] += eth;
-          pdyy[at] += eth;
-          pdzz[at] += eth;
-        }
+        std::fill_n(&b.material_spin[at0], unip, MSPIN[k_el]);
+        std::fill_n(&b.frame_turn[at0], unip, FTURN[k_el]);
       }
     }
+    update_points<Law>(mat, st, unip * c0, unip * chunk, b, thermal, plastic_heat, expands);
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
       const core::Index* conn = &block.connectivity[4 * e];
-      const Geometry& g = gk[k_el];
-      const auto& vl = vlk[k_el];
-      const auto& wl = wlk[k_el];
       const double t = tk[k_el];
-      const std::size_t q0 = unip * e;
-      const double* dzz = &pdzz[unip * k_el];
+      const std::size_t q0 = unip * e, at0 = k_el * unip;
       // Resultants over the thickness, and the thickness update from the mean normal strain.
-      double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, tz = 0;
-      for (int k = 0; k < nip; ++k) {
-        const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
-        const std::size_t q = q0 + static_cast<std::size_t>(k);
-        nxx += wk * st.s[0][q];
-        nyy += wk * st.s[1][q];
-        nxy += wk * st.s[2][q];
-        mxx += wk * z * st.s[0][q];
-        myy += wk * z * st.s[1][q];
-        mxy += wk * z * st.s[2][q];
-        qy += wk * st.s[3][q];
-        qx += wk * st.s[4][q];
-        tz += 0.5 * weight[k] * dzz[k];
-      }
-      const double a = g.area;
+      const Resultants n = resultants(st, q0, unip, t, zeta, weight);
+      double nxx = n.nxx, nyy = n.nyy;
+      double tz = 0.0;
+      for (std::size_t k = 0; k < unip; ++k)
+        tz += 0.5 * weight[k] * b.dzz[at0 + k];
+      const double a = f.area[k_el];
       // The step's stress work counts on the mid-step volume: the thickness halfway through
       // its update, the area back half the step's in-plane dilatation from t_{n+1} (on the
       // end-of-step volume the books drift at first order in the step when the sheet
       // stretches and thins).
       const double mid_volume =
           t * (1.0 + 0.5 * tz) * a * (1.0 - 0.5 * dt * (RATE[0][k_el] + RATE[1][k_el]));
-      r.internal_energy +=
-          0.5 * (work_old[k_el] + point_work(st, q0, k_el * unip)) * 0.5 * mid_volume;
+      r.internal_energy += 0.5 *
+                           (work_old[k_el] + column_work(st, b, q0, at0, unip, weight, inv_kappa)) *
+                           0.5 * mid_volume;
       if (bulk_q[k_el] > 0.0) {
         // The pressure over the thickness acts on the membrane only (not stored in the
         // stresses); its work q |tr D| t A dt is internal energy.
@@ -452,33 +216,17 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         r.internal_energy += bulk_q[k_el] * bulk_rate[k_el] * t * a * dt;
       }
       st.thickness[e] = t * (1.0 + tz);
-      if (plastic_heat) {
-        // Plastic dissipation sigma_eq d eps_p (the backward-Euler return: sigma : d eps^p),
-        // plane-stress von Mises on the in-plane stress (the transverse shear stays elastic).
-        double wp = 0.0;
-        for (int k = 0; k < nip; ++k) {
-          const std::size_t q = q0 + static_cast<std::size_t>(k);
-          const double de = st.eps_p[q] - peps0[k_el * unip + static_cast<std::size_t>(k)];
-          if (de > 0.0) {
-            const double x = st.s[0][q], y = st.s[1][q], xy = st.s[2][q];
-            wp += weight[k] * std::sqrt(x * x + y * y - x * y + 3.0 * xy * xy) * de;
-          }
-        }
-        wp *= 0.5 * t * a;
-        if (wp > 0.0) {
-          const bool tri = conn[2] == conn[3];
-          const double share = wp / (tri ? 3.0 : 4.0);
-          for (int i = 0; i < (tri ? 3 : 4); ++i)
-            out.plastic_work[static_cast<std::size_t>(conn[i])] += share;
-        }
-      }
+      if (plastic_heat)
+        spread_plastic_work(
+            conn, column_plastic_work(st, q0, &b.eps_p0[at0], unip, weight) * 0.5 * t * a, out);
       double fl[4][3], ml[4][2];
       for (int i = 0; i < 4; ++i) {
-        fl[i][0] = a * (g.b1[i] * nxx + g.b2[i] * nxy);
-        fl[i][1] = a * (g.b2[i] * nyy + g.b1[i] * nxy);
-        fl[i][2] = a * (g.b1[i] * qx + g.b2[i] * qy);
-        ml[i][0] = -a * (g.b2[i] * myy + g.b1[i] * mxy) - 0.25 * a * qy;
-        ml[i][1] = a * (g.b1[i] * mxx + g.b2[i] * mxy) + 0.25 * a * qx;
+        const double b1 = B1[i][k_el], b2 = B2[i][k_el];
+        fl[i][0] = a * (b1 * nxx + b2 * n.nxy);
+        fl[i][1] = a * (b2 * nyy + b1 * n.nxy);
+        fl[i][2] = a * (b1 * n.qx + b2 * n.qy);
+        ml[i][0] = -a * (b2 * n.myy + b1 * n.mxy) - 0.25 * a * n.qy;
+        ml[i][1] = a * (b1 * n.mxx + b2 * n.mxy) + 0.25 * a * n.qx;
       }
       if (qm > 0.0) {
         // Hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane and the
@@ -486,19 +234,19 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         // fields; viscous (IHQ 1-3) or stiffness (IHQ 4-5).
         double hx = 0, hy = 0;
         for (int i = 0; i < 4; ++i) {
-          hx += h[i] * g.xl[i];
-          hy += h[i] * g.yl[i];
+          hx += h[i] * f.xl[i][k_el];
+          hy += h[i] * f.yl[i][k_el];
         }
         double gam[4];
         for (int i = 0; i < 4; ++i)
-          gam[i] = h[i] - hx * g.b1[i] - hy * g.b2[i];
+          gam[i] = h[i] - hx * B1[i][k_el] - hy * B2[i][k_el];
         double qv[5] = {0, 0, 0, 0, 0};
         for (int i = 0; i < 4; ++i) {
-          qv[0] += gam[i] * vl[i][0];
-          qv[1] += gam[i] * vl[i][1];
-          qv[2] += gam[i] * vl[i][2];
-          qv[3] += gam[i] * wl[i][0];
-          qv[4] += gam[i] * wl[i][1];
+          qv[0] += gam[i] * f.vl[3 * i][k_el];
+          qv[1] += gam[i] * f.vl[3 * i + 1][k_el];
+          qv[2] += gam[i] * f.vl[3 * i + 2][k_el];
+          qv[3] += gam[i] * f.wl[3 * i][k_el];
+          qv[4] += gam[i] * f.wl[3 * i + 1][k_el];
         }
         const double sa = std::sqrt(a);
         double coef[5];
@@ -509,7 +257,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           // (the area for a square, the short side squared for an elongated element).
           double bb = 0.0;
           for (int i = 0; i < 4; ++i)
-            bb += g.b1[i] * g.b1[i] + g.b2[i] * g.b2[i];
+            bb += B1[i][k_el] * B1[i][k_el] + B2[i][k_el] * B2[i][k_el];
           const double km = qm * e_plate * t * a * bb / 8.0;
           const double kw = qm * e_plate * t * t * t * bb / 24.0;
           const double kr = qm * e_plate * t * t * t * a * bb / 192.0;
@@ -547,16 +295,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           }
         }
       }
-      // Back to global axes, added to the nodes (a triangle's fourth node is its third).
-      for (int i = 0; i < 4; ++i) {
-        const auto n = static_cast<std::size_t>(conn[i]);
-        for (int d = 0; d < 3; ++d) {
-          const double f = g.e1[d] * fl[i][0] + g.e2[d] * fl[i][1] + g.e3[d] * fl[i][2];
-          const double m = g.e1[d] * ml[i][0] + g.e2[d] * ml[i][1];
-          (d == 0 ? out.fx : d == 1 ? out.fy : out.fz)[n] += f;
-          (d == 0 ? mom.mx : d == 1 ? mom.my : mom.mz)[n] += m;
-        }
-      }
+      scatter(conn, f, k_el, fl, ml, out, mom);
     }
   }
   return r;

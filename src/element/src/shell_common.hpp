@@ -1,8 +1,9 @@
 #pragma once
-// What the shell kernels share (Belytschko-Tsay, shell_bt.cpp; fully integrated,
-// shell_full.cpp): the co-rotational frame and flat local geometry of a quadrilateral, the
-// shell length of the stable step, the plane-stress moduli of the wave speed. One copy, so the
-// two formulations turn stresses in the same frame and take the same step.
+// What the shell kernels and the element queries share (Belytschko-Tsay, shell_bt.cpp; fully
+// integrated, shell_full.cpp): the co-rotational frame and flat local geometry of one
+// quadrilateral (the frame the outputs and set-up ask for; the kernels compute the same frame
+// lane-wise over a chunk, shell_stages.hpp), the shell length of the stable step, the
+// plane-stress moduli of the wave speed.
 
 #include <algorithm>
 #include <cmath>
