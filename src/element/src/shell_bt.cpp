@@ -27,7 +27,6 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   double zeta[kMaxNip], weight[kMaxNip];
   thickness_rule(block.rule, nip, zeta, weight);
   const double kappa = block.shear_factor;
-  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
   const double qm = block.hourglass.qm;
   const bool stiffness_hg = block.hourglass.ihq >= 4;
   const double e_plate = rho * wave_speed * wave_speed;  // E / (1 - nu^2)
@@ -146,28 +145,20 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         r.dt_element = e;
       }
       const double phi = RATE[8][k_el];
-      turn_stresses(st, unip * e, unip, phi);
-      // Strain increments at the thickness points (tensor shears; the shear factor scales the
-      // transverse shear).
       const std::size_t at0 = k_el * unip;
-      for (std::size_t k = 0; k < unip; ++k) {
-        const double z = 0.5 * t * zeta[k];
-        const std::size_t at = at0 + k;
-        b.dxx[at] = (RATE[0][k_el] + z * RATE[3][k_el]) * dt;
-        b.dyy[at] = (RATE[1][k_el] + z * RATE[4][k_el]) * dt;
-        b.dxy[at] = 0.5 * (RATE[2][k_el] + z * RATE[5][k_el]) * dt;
-        b.dyz[at] = 0.5 * kappa * RATE[7][k_el] * dt;
-        b.dzx[at] = 0.5 * kappa * RATE[6][k_el] * dt;
+      {
+        double rate[kColumnRates][1], turn[1] = {phi}, w_old[1];
+        for (int c = 0; c < kColumnRates; ++c)
+          rate[c][0] = RATE[c][k_el];
+        prepare_columns<1>(st, b, unip * e, at0, unip, t, zeta, weight, kappa, dt, rate, turn,
+                           w_old);
+        work_old[k_el] = w_old[0];
       }
-      work_old[k_el] = column_work(st, b, unip * e, at0, unip, weight, inv_kappa);
       if (thermal) {
         // Thermal expansion takes alpha(T_mid) dT off the in-plane increments the law sees.
-        thickness_temperatures(block, nv, st, e, zeta, unip, dt, expands, &b.temperature[at0],
-                               &b.eth[at0]);
-        for (std::size_t k = 0; k < unip; ++k) {
-          b.dxx[at0 + k] -= b.eth[at0 + k];
-          b.dyy[at0 + k] -= b.eth[at0 + k];
-        }
+        double t_point[kMaxNip], eth_point[kMaxNip];
+        thickness_temperatures(block, nv, st, e, zeta, unip, dt, expands, t_point, eth_point);
+        spread_temperatures<1>(b, at0, unip, t_point, eth_point);
       }
       if constexpr (Law::needs_material_axes) {
         const double d12[3] = {f.x[1][k_el] - f.x[0][k_el], f.y[1][k_el] - f.y[0][k_el],
@@ -192,12 +183,13 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       const core::Index* conn = &block.connectivity[4 * e];
       const double t = tk[k_el];
       const std::size_t q0 = unip * e, at0 = k_el * unip;
-      // Resultants over the thickness, and the thickness update from the mean normal strain.
-      const Resultants n = resultants(st, q0, unip, t, zeta, weight);
-      double nxx = n.nxx, nyy = n.nyy;
-      double tz = 0.0;
-      for (std::size_t k = 0; k < unip; ++k)
-        tz += 0.5 * weight[k] * b.dzz[at0 + k];
+      // Resultants over the thickness, the stress work and the thickness update from the mean
+      // normal strain.
+      ColumnSums<1> cs;
+      sum_columns<1>(st, b, q0, at0, unip, t, zeta, weight, kappa, plastic_heat, cs);
+      double nxx = cs.nxx[0], nyy = cs.nyy[0];
+      const double nxy = cs.nxy[0], mxx = cs.mxx[0], myy = cs.myy[0], mxy = cs.mxy[0];
+      const double qx = cs.qx[0], qy = cs.qy[0], tz = cs.tz;
       const double a = f.area[k_el];
       // The step's stress work counts on the mid-step volume: the thickness halfway through
       // its update, the area back half the step's in-plane dilatation from t_{n+1} (on the
@@ -205,9 +197,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       // stretches and thins).
       const double mid_volume =
           t * (1.0 + 0.5 * tz) * a * (1.0 - 0.5 * dt * (RATE[0][k_el] + RATE[1][k_el]));
-      r.internal_energy += 0.5 *
-                           (work_old[k_el] + column_work(st, b, q0, at0, unip, weight, inv_kappa)) *
-                           0.5 * mid_volume;
+      r.internal_energy += 0.5 * (work_old[k_el] + cs.work[0]) * 0.5 * mid_volume;
       if (bulk_q[k_el] > 0.0) {
         // The pressure over the thickness acts on the membrane only (not stored in the
         // stresses); its work q |tr D| t A dt is internal energy.
@@ -217,16 +207,15 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       }
       st.thickness[e] = t * (1.0 + tz);
       if (plastic_heat)
-        spread_plastic_work(
-            conn, column_plastic_work(st, q0, &b.eps_p0[at0], unip, weight) * 0.5 * t * a, out);
+        spread_plastic_work(conn, cs.plastic[0] * 0.5 * t * a, out);
       double fl[4][3], ml[4][2];
       for (int i = 0; i < 4; ++i) {
         const double b1 = B1[i][k_el], b2 = B2[i][k_el];
-        fl[i][0] = a * (b1 * nxx + b2 * n.nxy);
-        fl[i][1] = a * (b2 * nyy + b1 * n.nxy);
-        fl[i][2] = a * (b1 * n.qx + b2 * n.qy);
-        ml[i][0] = -a * (b2 * n.myy + b1 * n.mxy) - 0.25 * a * n.qy;
-        ml[i][1] = a * (b1 * n.mxx + b2 * n.mxy) + 0.25 * a * n.qx;
+        fl[i][0] = a * (b1 * nxx + b2 * nxy);
+        fl[i][1] = a * (b2 * nyy + b1 * nxy);
+        fl[i][2] = a * (b1 * qx + b2 * qy);
+        ml[i][0] = -a * (b2 * myy + b1 * mxy) - 0.25 * a * qy;
+        ml[i][1] = a * (b1 * mxx + b2 * mxy) + 0.25 * a * qx;
       }
       if (qm > 0.0) {
         // Hourglass control of the four modes h = (1, -1, 1, -1): membrane, out of plane and the

@@ -40,7 +40,6 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
   double zeta[kMaxNip], weight[kMaxNip];
   thickness_rule(block.rule, nip, zeta, weight);
   const double kappa = block.shear_factor;
-  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
   // Elements go in chunks, as in the BT kernel: the frames lane-wise across the chunk's
   // elements, the Gauss points' kinematics lane-wise too, then one law call for all the
   // chunk's 4 x NIP x kChunk points, then the forces. Fixed-size buffers: nothing allocates.
@@ -180,39 +179,33 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         r.dt_element = e;
       }
       const std::size_t q0 = ppe * e, at_el = ppe * k_el;
-      for (std::size_t gp = 0; gp < 4; ++gp) {
-        const std::size_t at0 = at_el + gp * unip;
-        turn_stresses(st, q0 + gp * unip, unip, PHI[gp][k_el]);
-        for (std::size_t k = 0; k < unip; ++k) {
-          const double z = 0.5 * t * zeta[k];
-          const std::size_t at = at0 + k;
-          b.dxx[at] = (RATE[0][gp][k_el] + z * RATE[3][gp][k_el]) * dt;
-          b.dyy[at] = (RATE[1][gp][k_el] + z * RATE[4][gp][k_el]) * dt;
-          b.dxy[at] = 0.5 * (RATE[2][gp][k_el] + z * RATE[5][gp][k_el]) * dt;
-          b.dyz[at] = 0.5 * kappa * RATE[7][gp][k_el] * dt;
-          b.dzx[at] = 0.5 * kappa * RATE[6][gp][k_el] * dt;
+      {
+        double rate[kColumnRates][4], phi[4];
+        for (std::size_t gp = 0; gp < 4; ++gp) {
+          for (int c = 0; c < kColumnRates; ++c)
+            rate[c][gp] = RATE[c][gp][k_el];
+          phi[gp] = PHI[gp][k_el];
         }
-        work_old[k_el][gp] = column_work(st, b, q0 + gp * unip, at0, unip, weight, inv_kappa);
+        prepare_columns<4>(st, b, q0, at_el, unip, t, zeta, weight, kappa, dt, rate, phi,
+                           work_old[k_el]);
         if constexpr (material::law_needs_spin<Law>())
-          std::fill_n(&b.spin[at0], unip, PHI[gp][k_el]);
-        if constexpr (material::law_needs_frame_turn<Law>()) {
-          std::fill_n(&b.material_spin[at0], unip, MSPIN[gp][k_el]);
-          std::fill_n(&b.frame_turn[at0], unip, FTURN[k_el]);
+          spread_columns<4>(&b.spin[at_el], unip, phi);
+      }
+      if constexpr (material::law_needs_frame_turn<Law>()) {
+        double spin_g[4], turn_g[4];
+        for (std::size_t gp = 0; gp < 4; ++gp) {
+          spin_g[gp] = MSPIN[gp][k_el];
+          turn_g[gp] = FTURN[k_el];
         }
+        spread_columns<4>(&b.material_spin[at_el], unip, spin_g);
+        spread_columns<4>(&b.frame_turn[at_el], unip, turn_g);
       }
       if (thermal) {
         // As the BT kernel: one temperature per thickness point (the engine keeps NIP per
         // element), the same at the four Gauss points; thermal expansion off the increments.
         double t_point[kMaxNip], eth_point[kMaxNip];
         thickness_temperatures(block, nv, st, e, zeta, unip, dt, expands, t_point, eth_point);
-        for (std::size_t gp = 0; gp < 4; ++gp)
-          for (std::size_t k = 0; k < unip; ++k) {
-            const std::size_t at = at_el + gp * unip + k;
-            b.eth[at] = eth_point[k];
-            b.dxx[at] -= eth_point[k];
-            b.dyy[at] -= eth_point[k];
-            b.temperature[at] = t_point[k];
-          }
+        spread_temperatures<4>(b, at_el, unip, t_point, eth_point);
       }
       if constexpr (Law::needs_material_axes) {
         // The element's axes, as the BT kernel sets them, at every point.
@@ -232,25 +225,22 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       const core::Index* conn = &block.connectivity[4 * e];
       const double t = tk[k_el];
       const std::size_t q0 = ppe * e, at_el = ppe * k_el;
-      // The thickness follows the mean normal strain over all the element's points.
-      double tz = 0.0;
-      for (std::size_t gp = 0; gp < 4; ++gp)
-        for (std::size_t k = 0; k < unip; ++k)
-          tz += 0.125 * weight[k] * b.dzz[at_el + gp * unip + k];
+      // The columns' resultants and stress work; the thickness follows the mean normal strain
+      // over all the element's points.
+      ColumnSums<4> cs;
+      sum_columns<4>(st, b, q0, at_el, unip, t, zeta, weight, kappa, plastic_heat, cs);
+      const double tz = cs.tz;
       double fl[4][3] = {}, ml[4][2] = {};
       double wp = 0.0;
       for (std::size_t gp = 0; gp < 4; ++gp) {
-        const std::size_t qg = q0 + gp * unip, at0 = at_el + gp * unip;
-        const Resultants n = resultants(st, qg, unip, t, zeta, weight);
-        double nxx = n.nxx, nyy = n.nyy;
+        double nxx = cs.nxx[gp], nyy = cs.nyy[gp];
+        const double nxy = cs.nxy[gp], mxx = cs.mxx[gp], myy = cs.myy[gp], mxy = cs.mxy[gp];
+        const double qx = cs.qx[gp], qy = cs.qy[gp];
         const double da = DET[gp][k_el];  // Gauss weights 1
-        if (plastic_heat)
-          wp += column_plastic_work(st, qg, &b.eps_p0[at0], unip, weight) * 0.5 * t * da;
+        wp += cs.plastic[gp] * 0.5 * t * da;
         // Midpoint rule on the point's mid-step volume, as the BT kernel books its one point.
         const double mid_volume = t * (1.0 + 0.5 * tz) * da * (1.0 - 0.5 * dt * DIL[gp][k_el]);
-        r.internal_energy +=
-            0.5 * (work_old[k_el][gp] + column_work(st, b, qg, at0, unip, weight, inv_kappa)) *
-            0.5 * mid_volume;
+        r.internal_energy += 0.5 * (work_old[k_el][gp] + cs.work[gp]) * 0.5 * mid_volume;
         if (bulk_q[k_el][gp] > 0.0) {
           nxx -= bulk_q[k_el][gp] * t;
           nyy -= bulk_q[k_el][gp] * t;
@@ -258,17 +248,17 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         }
         for (int i = 0; i < 4; ++i) {
           const double nx = BX[i][gp][k_el], ny = BY[i][gp][k_el];
-          fl[i][0] += da * (nx * nxx + ny * n.nxy);
-          fl[i][1] += da * (ny * nyy + nx * n.nxy);
-          ml[i][0] -= da * (ny * n.myy + nx * n.mxy);
-          ml[i][1] += da * (nx * n.mxx + ny * n.mxy);
+          fl[i][0] += da * (nx * nxx + ny * nxy);
+          fl[i][1] += da * (ny * nyy + nx * nxy);
+          ml[i][0] -= da * (ny * myy + nx * mxy);
+          ml[i][1] += da * (nx * mxx + ny * mxy);
         }
         // Transverse shear: the power qx gxz + qy gyz = Q_xi gamma_xi + Q_eta gamma_eta with
         // [Q_xi, Q_eta] = J^-T [qx, qy], spread onto the edges' covariant strains.
         const double x_xi = JAC[0][gp][k_el], y_xi = JAC[1][gp][k_el];
         const double x_eta = JAC[2][gp][k_el], y_eta = JAC[3][gp][k_el];
-        const double q_xi = (y_eta * n.qx - x_eta * n.qy) / da;
-        const double q_eta = (x_xi * n.qy - y_xi * n.qx) / da;
+        const double q_xi = (y_eta * qx - x_eta * qy) / da;
+        const double q_eta = (x_xi * qy - y_xi * qx) / da;
         const double xi = kXi[gp], eta = kEta[gp];
         const double c_edge[4] = {da * q_xi * 0.5 * (1.0 - eta), da * q_xi * 0.5 * (1.0 + eta),
                                   da * q_eta * 0.5 * (1.0 - xi), da * q_eta * 0.5 * (1.0 + xi)};

@@ -145,26 +145,6 @@ inline InPlaneRate mid_step_rate(double dxx, double lxy, double lyx, double dyy,
   return {am[0][0], am[0][1], am[1][0], am[1][1]};
 }
 
-// Turns the stored stresses of n consecutive points from q by phi about the normal (the
-// material's spin relative to the frame's: Jaumann relative to the frame, so the result does
-// not depend on which edges the frame follows). Cayley form: exactly orthogonal, no
-// trigonometry.
-inline void turn_stresses(ShellBlockState& st, std::size_t q0, std::size_t n, double phi) {
-  if (phi == 0.0)
-    return;
-  const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-  const double c = (1.0 - half_sq) * inv, sn = phi * inv;
-  for (std::size_t q = q0; q < q0 + n; ++q) {
-    const double sx = st.s[0][q], sy = st.s[1][q], sxy = st.s[2][q];
-    st.s[0][q] = c * c * sx + sn * sn * sy - 2.0 * c * sn * sxy;
-    st.s[1][q] = sn * sn * sx + c * c * sy + 2.0 * c * sn * sxy;
-    st.s[2][q] = c * sn * (sx - sy) + (c * c - sn * sn) * sxy;
-    const double tzx = st.s[4][q], tyz = st.s[3][q];
-    st.s[4][q] = c * tzx - sn * tyz;
-    st.s[3][q] = sn * tzx + c * tyz;
-  }
-}
-
 // The inputs and scratch of one law call over P points (a chunk's thickness points).
 template <std::size_t P>
 struct PointBuffers {
@@ -173,23 +153,6 @@ struct PointBuffers {
   double material_spin[P], frame_turn[P];    // laws that keep material lines (needs_frame_turn)
   double temperature[P], eps_p0[P], eth[P];  // thermal blocks; the plastic strain before the law
 };
-
-// Stress work per unit volume over the step of n thickness points (stresses from q0, strain
-// increments from at0), weighted by the thickness rule: sigma : d_eps with the transverse shear
-// as the element's forces see it (the resultant times the unscaled shear rate: the shear factor
-// scales only the stiffness, hence 1 / kappa on the increments that carry it).
-template <std::size_t P>
-inline double column_work(const ShellBlockState& st, const PointBuffers<P>& b, std::size_t q0,
-                          std::size_t at0, std::size_t n, const double* weight, double inv_kappa) {
-  double w = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t q = q0 + k, at = at0 + k;
-    w += weight[k] *
-         (st.s[0][q] * b.dxx[at] + st.s[1][q] * b.dyy[at] + 2.0 * st.s[2][q] * b.dxy[at] +
-          2.0 * inv_kappa * (st.s[3][q] * b.dyz[at] + st.s[4][q] * b.dzx[at]));
-  }
-  return w;
-}
 
 // The temperatures of element e's thickness points at t_{n+1}: the mean of its nodes' (a
 // triangle's three), through the thickness the quadratic profile of a thick thermal shell's
@@ -290,45 +253,154 @@ inline void update_points(const M& mat, ShellBlockState& st, std::size_t q0, std
   }
 }
 
-// The resultants of a column of thickness points (stresses from q0) of a shell of thickness t:
-// membrane forces N, moments M and transverse shear forces Q per unit length.
-struct Resultants {
-  double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0;
-};
-inline Resultants resultants(const ShellBlockState& st, std::size_t q0, std::size_t nip, double t,
-                             const double* zeta, const double* weight) {
-  Resultants r;
-  for (std::size_t k = 0; k < nip; ++k) {
-    const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
-    const std::size_t q = q0 + k;
-    r.nxx += wk * st.s[0][q];
-    r.nyy += wk * st.s[1][q];
-    r.nxy += wk * st.s[2][q];
-    r.mxx += wk * z * st.s[0][q];
-    r.myy += wk * z * st.s[1][q];
-    r.mxy += wk * z * st.s[2][q];
-    r.qy += wk * st.s[3][q];
-    r.qx += wk * st.s[4][q];
+// The columns of an element's G in-plane points (G = 1 for BT, 4 for ELFORM 16): thickness
+// point k of in-plane point g at q0 + g nip + k in the state (at0 + g nip + k in the chunk's
+// buffers).
+//
+// The rates of in-plane point g over the step, rate[r][g]: the mapped membrane rate (dxx, dyy,
+// dxy + dyx), the curvature rates (kx, ky, kxy), the transverse shear strains (gxz, gyz).
+constexpr int kColumnRates = 8;
+
+// Turns the stored stresses of each column by phi[g] about the normal (the material's spin
+// relative to the frame's: Jaumann relative to the frame, so the result does not depend on
+// which edges the frame follows; Cayley form, exactly orthogonal, no trigonometry); sets the
+// strain increments of the points (tensor shears; the shear factor kappa scales the transverse
+// shear); returns each column's stress work per unit volume before the law (work_old), weighted
+// by the thickness rule: sigma : d_eps with the transverse shear as the element's forces see it
+// (the resultant times the unscaled shear rate: the shear factor scales only the stiffness).
+template <std::size_t G, std::size_t P>
+inline void prepare_columns(ShellBlockState& st, PointBuffers<P>& b, std::size_t q0,
+                            std::size_t at0, std::size_t nip, double t, const double* zeta,
+                            const double* weight, double kappa, double dt,
+                            const double (&rate)[kColumnRates][G], const double (&phi)[G],
+                            double (&work_old)[G]) {
+  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
+  double c[G], sn[G];
+  for (std::size_t g = 0; g < G; ++g) {
+    const double half_sq = 0.25 * phi[g] * phi[g], inv = 1.0 / (1.0 + half_sq);
+    c[g] = (1.0 - half_sq) * inv;
+    sn[g] = phi[g] * inv;
   }
-  return r;
+  // The arrays through restrict pointers: they never overlap, and the loop over a column
+  // vectorises.
+  double* __restrict sxx = st.s[0].data() + q0;
+  double* __restrict syy = st.s[1].data() + q0;
+  double* __restrict sxy = st.s[2].data() + q0;
+  double* __restrict syz = st.s[3].data() + q0;
+  double* __restrict szx = st.s[4].data() + q0;
+  double* __restrict dxx = b.dxx + at0;
+  double* __restrict dyy = b.dyy + at0;
+  double* __restrict dxy = b.dxy + at0;
+  double* __restrict dyz = b.dyz + at0;
+  double* __restrict dzx = b.dzx + at0;
+  for (std::size_t g = 0; g < G; ++g) {
+    const double cg = c[g], sg = sn[g];
+    double w = 0.0;
+    for (std::size_t k = 0; k < nip; ++k) {
+      const double z = 0.5 * t * zeta[k];
+      const std::size_t i = g * nip + k;
+      const double sx = sxx[i], sy = syy[i], txy = sxy[i], tzx = szx[i], tyz = syz[i];
+      const double s0 = cg * cg * sx + sg * sg * sy - 2.0 * cg * sg * txy;
+      const double s1 = sg * sg * sx + cg * cg * sy + 2.0 * cg * sg * txy;
+      const double s2 = cg * sg * (sx - sy) + (cg * cg - sg * sg) * txy;
+      const double s4 = cg * tzx - sg * tyz;
+      const double s3 = sg * tzx + cg * tyz;
+      sxx[i] = s0, syy[i] = s1, sxy[i] = s2, syz[i] = s3, szx[i] = s4;
+      const double exx = (rate[0][g] + z * rate[3][g]) * dt;
+      const double eyy = (rate[1][g] + z * rate[4][g]) * dt;
+      const double exy = 0.5 * (rate[2][g] + z * rate[5][g]) * dt;
+      const double eyz = 0.5 * kappa * rate[7][g] * dt;
+      const double ezx = 0.5 * kappa * rate[6][g] * dt;
+      dxx[i] = exx, dyy[i] = eyy, dxy[i] = exy, dyz[i] = eyz, dzx[i] = ezx;
+      w += weight[k] *
+           (s0 * exx + s1 * eyy + 2.0 * s2 * exy + 2.0 * inv_kappa * (s3 * eyz + s4 * ezx));
+    }
+    work_old[g] = w;
+  }
 }
 
-// Plastic dissipation per unit volume of a column over the step, weighted by the thickness
-// rule: sigma_eq d eps_p (the backward-Euler return's sigma : d eps^p), the plane-stress von
-// Mises stress of the in-plane components (the transverse shear stays elastic). eps_p0: the
-// points' plastic strains before the law.
-inline double column_plastic_work(const ShellBlockState& st, std::size_t q0, const double* eps_p0,
-                                  std::size_t nip, const double* weight) {
-  double wp = 0.0;
-  for (std::size_t k = 0; k < nip; ++k) {
-    const std::size_t q = q0 + k;
-    const double de = st.eps_p[q] - eps_p0[k];
-    if (de > 0.0) {
-      const double x = st.s[0][q], y = st.s[1][q], xy = st.s[2][q];
-      wp += weight[k] * std::sqrt(x * x + y * y - x * y + 3.0 * xy * xy) * de;
+// Each point's temperature and thermal strain (one per thickness point, the same in every
+// column) into the buffers; the thermal strain off the in-plane increments the law sees.
+template <std::size_t G, std::size_t P>
+inline void spread_temperatures(PointBuffers<P>& b, std::size_t at0, std::size_t nip,
+                                const double* t_point, const double* eth_point) {
+  for (std::size_t g = 0; g < G; ++g)
+    for (std::size_t k = 0; k < nip; ++k) {
+      const std::size_t at = at0 + g * nip + k;
+      b.eth[at] = eth_point[k];
+      b.dxx[at] -= eth_point[k];
+      b.dyy[at] -= eth_point[k];
+      b.temperature[at] = t_point[k];
     }
+}
+
+// A value per column (value[g]) at every point of the columns.
+template <std::size_t G>
+inline void spread_columns(double* out, std::size_t nip, const double (&value)[G]) {
+  for (std::size_t g = 0; g < G; ++g)
+    for (std::size_t k = 0; k < nip; ++k)
+      out[g * nip + k] = value[g];
+}
+
+// What the force stage needs of the columns after the law: the resultants of each column of a
+// shell of thickness t (membrane forces N, moments M, transverse shear forces Q per unit
+// length), its stress work per unit volume after the law, its plastic dissipation per unit
+// volume (sigma_eq d eps_p, the backward-Euler return's sigma : d eps^p, the plane-stress von
+// Mises stress of the in-plane components; the transverse shear stays elastic), and the
+// thickness strain of the step, the mean over all the points.
+template <std::size_t G>
+struct ColumnSums {
+  double nxx[G], nyy[G], nxy[G], mxx[G], myy[G], mxy[G], qx[G], qy[G];
+  double work[G], plastic[G];
+  double tz;
+};
+template <std::size_t G, std::size_t P>
+inline void sum_columns(const ShellBlockState& st, const PointBuffers<P>& b, std::size_t q0,
+                        std::size_t at0, std::size_t nip, double t, const double* zeta,
+                        const double* weight, double kappa, bool plastic, ColumnSums<G>& r) {
+  const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
+  constexpr double kMean = 0.5 / static_cast<double>(G);  // the weights sum to 2 per column
+  const double* __restrict sxx = st.s[0].data() + q0;
+  const double* __restrict syy = st.s[1].data() + q0;
+  const double* __restrict sxy = st.s[2].data() + q0;
+  const double* __restrict syz = st.s[3].data() + q0;
+  const double* __restrict szx = st.s[4].data() + q0;
+  const double* __restrict eps = st.eps_p.data() + q0;
+  const double* __restrict eps0 = b.eps_p0 + at0;
+  const double* __restrict dxx = b.dxx + at0;
+  const double* __restrict dyy = b.dyy + at0;
+  const double* __restrict dxy = b.dxy + at0;
+  const double* __restrict dyz = b.dyz + at0;
+  const double* __restrict dzx = b.dzx + at0;
+  const double* __restrict dzz = b.dzz + at0;
+  double tz = 0.0;
+  for (std::size_t g = 0; g < G; ++g) {
+    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, w = 0, wp = 0;
+    for (std::size_t k = 0; k < nip; ++k) {
+      const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
+      const std::size_t i = g * nip + k;
+      const double s0 = sxx[i], s1 = syy[i], s2 = sxy[i], s3 = syz[i], s4 = szx[i];
+      nxx += wk * s0;
+      nyy += wk * s1;
+      nxy += wk * s2;
+      mxx += wk * z * s0;
+      myy += wk * z * s1;
+      mxy += wk * z * s2;
+      qy += wk * s3;
+      qx += wk * s4;
+      tz += kMean * weight[k] * dzz[i];
+      w += weight[k] * (s0 * dxx[i] + s1 * dyy[i] + 2.0 * s2 * dxy[i] +
+                        2.0 * inv_kappa * (s3 * dyz[i] + s4 * dzx[i]));
+      if (plastic) {
+        const double de = eps[i] - eps0[i];
+        const double eq = std::sqrt(s0 * s0 + s1 * s1 - s0 * s1 + 3.0 * s2 * s2);
+        wp += de > 0.0 ? weight[k] * eq * de : 0.0;
+      }
+    }
+    r.nxx[g] = nxx, r.nyy[g] = nyy, r.nxy[g] = nxy, r.mxx[g] = mxx, r.myy[g] = myy;
+    r.mxy[g] = mxy, r.qx[g] = qx, r.qy[g] = qy, r.work[g] = w, r.plastic[g] = wp;
   }
-  return wp;
+  r.tz = tz;
 }
 
 // Plastic work wp of element e shared among its nodes (a triangle's three), as heat.
