@@ -1,6 +1,9 @@
 #include "plyform/material/shell.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include "hardening.hpp"
@@ -159,23 +162,95 @@ void shell_update(const core::PowerLawPlasticity& m, std::size_t n, const ShellP
   shell_j2(m, n, pts);
 }
 
-// Point by point with the constants at each point's temperature: the elastic trial on arrays
-// shifted to the point, then the yielding points' plane-stress returns of *MAT_024 together.
+namespace {
+
+// The plane-stress constants of *MAT_004 at the temperatures met in one call, remembered in a
+// small direct-mapped table: the points of an element share their thickness points'
+// temperatures (ELFORM 16's four in-plane columns; every point of a thin thermal shell), and the
+// table search and divisions of constants_at cost more than the point's elastic trial.
+class ThermalConstantsMemo {
+ public:
+  struct Entry {
+    double young, nu, sigy, hardening;  // constants_at's
+    double c11, c12, two_g, nu_zz;      // the elastic trial's (plane_stress_elastic's)
+  };
+  explicit ThermalConstantsMemo(const core::ElasticPlasticThermal& m) : m_(m) {}
+  const Entry& at(double t) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &t, sizeof bits);
+    const std::size_t slot = static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 60);
+    if (!filled_[slot] || key_[slot] != bits) {
+      const ThermalPlasticConstants c = constants_at(m_, t);
+      const double nu = c.poisson;
+      const double c11 = c.young / (1.0 - nu * nu);
+      entry_[slot] = {c.young,        nu, c.sigy, c.hardening, c11, nu * c11, c.young / (1.0 + nu),
+                      nu / (1.0 - nu)};
+      key_[slot] = bits;
+      filled_[slot] = true;
+    }
+    return entry_[slot];
+  }
+
+ private:
+  static constexpr std::size_t kSlots = 16;
+  const core::ElasticPlasticThermal& m_;
+  std::uint64_t key_[kSlots] = {};
+  bool filled_[kSlots] = {};
+  Entry entry_[kSlots];
+};
+
+}  // namespace
+
+// The constants at each point's temperature, then the elastic trial over a block of points at
+// once, then the yielding points' plane-stress returns of *MAT_024 together.
 void shell_update(const core::ElasticPlasticThermal& m, std::size_t n, const ShellPoints& pts) {
   detail::LinearPlaneStressBatch batch(pts.sxx, pts.syy, pts.sxy, pts.eps_p, pts.dzz);
-  for (std::size_t p = 0; p < n; ++p) {
-    const ThermalPlasticConstants c = constants_at(m, pts.temperature[p]);
-    const double nu = c.poisson;
-    const double c11 = c.young / (1.0 - nu * nu);
-    plane_stress_elastic_kernel(1, c11, nu * c11, c.young / (1.0 + nu), nu / (1.0 - nu),
-                                pts.dxx + p, pts.dyy + p, pts.dxy + p, pts.dyz + p, pts.dzx + p,
-                                pts.sxx + p, pts.syy + p, pts.sxy + p, pts.syz + p, pts.szx + p,
-                                pts.dzz + p);
-    const double x = pts.sxx[p], y = pts.syy[p], t = pts.sxy[p];
-    const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
-    const double sy_n = c.sigy + c.hardening * pts.eps_p[p];
-    if (psi2 > sy_n * sy_n)
-      batch.add(p, c.young, nu, c.sigy, c.hardening, x + y, x - y, t, std::sqrt(psi2));
+  ThermalConstantsMemo memo(m);
+  constexpr std::size_t kBlock = 64;
+  // Per point of the block: the trial's constants and the yield's (copied: a later temperature
+  // may take the memo's slot).
+  double c11[kBlock], c12[kBlock], two_g[kBlock], nu_zz[kBlock];
+  double young[kBlock], nu[kBlock], sigy[kBlock], hardening[kBlock];
+  for (std::size_t p0 = 0; p0 < n; p0 += kBlock) {
+    const std::size_t block = std::min(kBlock, n - p0);
+    for (std::size_t i = 0; i < block; ++i) {
+      const ThermalConstantsMemo::Entry& c = memo.at(pts.temperature[p0 + i]);
+      young[i] = c.young;
+      nu[i] = c.nu;
+      sigy[i] = c.sigy;
+      hardening[i] = c.hardening;
+      c11[i] = c.c11;
+      c12[i] = c.c12;
+      two_g[i] = c.two_g;
+      nu_zz[i] = c.nu_zz;
+    }
+    double* __restrict sxx = pts.sxx + p0;
+    double* __restrict syy = pts.syy + p0;
+    double* __restrict sxy = pts.sxy + p0;
+    double* __restrict syz = pts.syz + p0;
+    double* __restrict szx = pts.szx + p0;
+    double* __restrict dzz = pts.dzz + p0;
+    const double* __restrict dxx = pts.dxx + p0;
+    const double* __restrict dyy = pts.dyy + p0;
+    const double* __restrict dxy = pts.dxy + p0;
+    const double* __restrict dyz = pts.dyz + p0;
+    const double* __restrict dzx = pts.dzx + p0;
+    for (std::size_t i = 0; i < block; ++i) {
+      sxx[i] += c11[i] * dxx[i] + c12[i] * dyy[i];
+      syy[i] += c12[i] * dxx[i] + c11[i] * dyy[i];
+      sxy[i] += two_g[i] * dxy[i];
+      syz[i] += two_g[i] * dyz[i];
+      szx[i] += two_g[i] * dzx[i];
+      dzz[i] = -nu_zz[i] * (dxx[i] + dyy[i]);
+    }
+    for (std::size_t i = 0; i < block; ++i) {
+      const std::size_t p = p0 + i;
+      const double x = pts.sxx[p], y = pts.syy[p], t = pts.sxy[p];
+      const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+      const double sy_n = sigy[i] + hardening[i] * pts.eps_p[p];
+      if (psi2 > sy_n * sy_n)
+        batch.add(p, young[i], nu[i], sigy[i], hardening[i], x + y, x - y, t, std::sqrt(psi2));
+    }
   }
 }
 
