@@ -1,10 +1,12 @@
-// `plyform run`'s summary.json on a shell deck with a rigid tool: it counts every element, and
-// its rate is the integrated (deformable) element-cycles over the wall time it reports.
+// `plyform run`'s summary.json on a shell deck with a rigid tool: it counts every element, its
+// rate is the integrated (deformable) element-cycles over the wall time it reports, and its
+// per-pass timing accounts for the whole time loop.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "plyform/app/commands.hpp"
 #include "temp_dir.hpp"
@@ -108,6 +110,60 @@ TEST(RunSummary, ThreadsFromTheDeckWhenTheCommandLineGivesNone) {
   EXPECT_EQ(threads_of_run(with_parallel_card("         2"), 0), 2.0);
   EXPECT_EQ(threads_of_run(with_parallel_card("        -2         0         1"), 0), 2.0);
   EXPECT_EQ(threads_of_run(kDeck, 0), 1.0);
+}
+
+// Every number after "key": in the text, in order.
+std::vector<double> numbers(const std::string& json, const std::string& key) {
+  std::vector<double> out;
+  const std::string tag = "\"" + key + "\": ";
+  for (auto at = json.find(tag); at != std::string::npos; at = json.find(tag, at + 1))
+    out.push_back(std::stod(json.substr(at + tag.size())));
+  return out;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+TEST(RunSummary, TimingAccountsForTheWholeLoopByKernelAndInterfaceStage) {
+  // The sheet and tool with a contact between them (the sheet's part the slave).
+  std::string text = kDeck;
+  text.insert(text.find("*END"), "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n");
+  test::TempDir dir;
+  RunOptions o;
+  o.deck = dir.write("timed.k", text);
+  o.output = dir.path() / "out";
+  o.progress = false;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
+  std::ifstream in(*o.output / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const double loop = number(json, "loop_seconds"), wall = number(json, "wall_seconds");
+  ASSERT_GT(loop, 0.0) << json;
+  EXPECT_LE(loop, wall) << json;
+  // The passes' seconds are never negative and sum to the loop's (the last line takes what no
+  // pass took), their shares to one.
+  const std::vector<double> seconds = numbers(json, "seconds"), shares = numbers(json, "share");
+  ASSERT_EQ(seconds.size(), shares.size());
+  double sum = 0.0, share_sum = 0.0;
+  for (std::size_t i = 0; i < seconds.size(); ++i) {
+    EXPECT_GE(seconds[i], 0.0) << json;
+    sum += seconds[i];
+    share_sum += shares[i];
+  }
+  EXPECT_NEAR(sum, loop, 1e-9 * loop) << json;
+  EXPECT_NEAR(share_sum, 1.0, 1e-9) << json;
+  // The one deformable block's kernel by formulation and law (the rigid tool has none), and
+  // the interface's four stages.
+  EXPECT_EQ(count(json, "\"group\": \"elements\""), 1u) << json;
+  EXPECT_EQ(count(json, "\"pass\": \"shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC\""), 1u)
+      << json;
+  for (const char* stage : {"search", "projection and kinematics", "law", "forces"})
+    EXPECT_EQ(count(json, std::string("\"pass\": \"contact 1: ") + stage + "\""), 1u) << json;
+  EXPECT_NE(out.str().find("timing: the time loop's"), std::string::npos) << out.str();
 }
 
 TEST(RunSummary, CommandLineThreadsWinOverTheDeck) {

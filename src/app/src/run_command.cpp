@@ -18,6 +18,7 @@
 #include "plyform/setup/build.hpp"
 #include "plyform/setup/validate.hpp"
 #include "result_writer.hpp"
+#include "timing_report.hpp"
 
 namespace plyform::app {
 namespace {
@@ -163,6 +164,9 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
   summary.heat_stored = result.heat.stored;
   summary.heat_entered = result.heat.entered();
   summary.warnings = result.warnings;
+  summary.loop_seconds = result.timing.loop_seconds;
+  for (const engine::PassTime& p : result.timing.passes)
+    summary.timing.push_back({p.group, p.name, p.seconds});
   output::write_summary_json(outdir / "summary.json", summary);
 
   for (const auto& w : result.warnings)
@@ -219,6 +223,7 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
     fmt::print(out, "checkpoint{}: {} written, the last in {}\n",
                result.checkpoints == 1 ? "" : "s", result.checkpoints, result.checkpoint);
   }
+  print_timing(out, result.timing);
   fmt::print(out, "results in {}\n", outdir.string());
   if (!result.ok) {
     fmt::print(err, "error: {}\n", result.error);

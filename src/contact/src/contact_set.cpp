@@ -9,6 +9,7 @@
 #include "plyform/contact/segment_projection.hpp"
 #include "plyform/contact/tiebreak.hpp"
 #include "plyform/core/invariant.hpp"
+#include "plyform/core/stopwatch.hpp"
 #include "plyform/law/law.hpp"
 
 namespace plyform::contact {
@@ -74,6 +75,8 @@ double largest_sigma_max(const law::Parameters& p) {
 struct PassRuntime {
   const core::ContactInterface* iface = nullptr;
   const core::ContactPass* pass = nullptr;
+  // Wall seconds in apply(): search, projection, law, forces (InterfaceTiming).
+  double seconds[4] = {0.0, 0.0, 0.0, 0.0};
   law::Law law;
   law::HistoryStore history;
   law::BatchHistory hist;
@@ -1250,6 +1253,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       pr.searched = false;
       continue;
     }
+    core::Stopwatch clock;
     if (cp.offsets_follow_thickness && !shell_thickness_.empty())
       follow_thickness(pr);
     // Re-search once the contact nodes moved far enough to bring a slave node near a segment
@@ -1271,6 +1275,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       search(pr, packed, mass_, rigid_, rot_, tssfac_);
       ++searches_;
     }
+    pr.seconds[0] += clock.lap();
 
     measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
     pr.measured = true;
@@ -1287,6 +1292,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
       }
     }
+    pr.seconds[1] += clock.lap();
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.gap.data();
@@ -1326,6 +1332,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       }
     }
 
+    pr.seconds[2] += clock.lap();
     // Forces from the tractions, and the second half of the step's work.
 #pragma omp parallel for schedule(static)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
@@ -1414,7 +1421,28 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     // only located nodes read it. Until the next apply(), the projection on pr.seg[k] is in
     // prev_shape (what the heat between cycles reads: located_shape()).
     std::swap(pr.prev_shape, pr.shape);
+    pr.seconds[3] += clock.lap();
   }
+}
+
+std::vector<InterfaceTiming> ContactSet::timing() const {
+  std::vector<InterfaceTiming> out;
+  const core::ContactInterface* last = nullptr;
+  for (const auto& pp : passes_) {
+    const PassRuntime& pr = *pp;
+    if (pr.iface != last) {
+      out.push_back({});
+      out.back().index = static_cast<std::size_t>(pr.iface - model_.contacts.data());
+      out.back().id = pr.iface->id;
+      last = pr.iface;
+    }
+    InterfaceTiming& r = out.back();
+    r.search += pr.seconds[0];
+    r.projection += pr.seconds[1];
+    r.law += pr.seconds[2];
+    r.forces += pr.seconds[3];
+  }
+  return out;
 }
 
 std::vector<InterfaceReport> ContactSet::report() const {

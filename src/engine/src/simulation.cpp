@@ -17,7 +17,9 @@
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "mass.hpp"
+#include "pass_clock.hpp"
 #include "plyform/core/invariant.hpp"
+#include "plyform/core/stopwatch.hpp"
 #include "plyform/engine/checkpoint_file.hpp"
 #include "plyform/engine/solver.hpp"
 #include "plyform/engine/thread_governor.hpp"
@@ -255,6 +257,10 @@ struct Simulation::State {
   double reduced_before = 0.0;
   RunResult res;
 
+  // ---- Timing (pass_clock.hpp) -----------------------------------------------------------------
+  PassClock clock;
+  std::vector<double> item_seconds;  // each element work item's seconds on its thread
+
   // ---- Scratch of one pass -------------------------------------------------------------------
   std::vector<ItemResult> item_results;
   InternalResult ir;
@@ -294,8 +300,9 @@ struct Simulation::State {
   bool heat_conduction(bool now);
   bool step_vote(double& dt_next);
   bool velocities(double dt_next);
-  bool cycle_once();
-  bool thermal_cycle_once();
+  bool cycle_once(core::Stopwatch& watch);
+  bool thermal_cycle_once(core::Stopwatch& watch);
+  [[nodiscard]] PassTiming timing(double loop_seconds) const;
 
   // Their parts and helpers.
   void pack();
@@ -436,6 +443,7 @@ void Simulation::State::set_up_run() {
   for (std::size_t p = 0; p < phases.size(); ++p)
     phase_offset[p + 1] = phase_offset[p] + phases[p].size();
   item_results.resize(phase_offset.back());
+  item_seconds.assign(phase_offset.back(), 0.0);
   element_count = model.deformable_element_count();
   shell_books.assign(model.shell_blocks.size(), {0.0, 0.0});
   solid_books.assign(model.solid_blocks.size(), {0.0, 0.0});
@@ -627,7 +635,9 @@ void Simulation::State::internal(double dt_step) {
 #pragma omp for schedule(dynamic, 1)
       for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
         const WorkItem& it = phase[static_cast<std::size_t>(w)];
-        ItemResult& out = item_results[phase_offset[p] + static_cast<std::size_t>(w)];
+        const std::size_t at = phase_offset[p] + static_cast<std::size_t>(w);
+        ItemResult& out = item_results[at];
+        core::Stopwatch item_clock;
         if (it.shell) {
           const core::ShellBlock& blk = model.shell_blocks[it.block];
           const element::ShellResult x = element::shell_forces(
@@ -643,6 +653,7 @@ void Simulation::State::internal(double dt_step) {
           out = {x.dt_min, x.dt_element,           x.hourglass_energy, x.internal_energy,
                  x.failed, x.unsupported_material, x.failed_element};
         }
+        item_seconds[at] += item_clock.lap();
       }
     }
   }
@@ -1344,6 +1355,7 @@ bool Simulation::State::heat_conduction(bool now) {
     for (const element::ShellBlockState& b : shells)
       g.shell_thickness.push_back(b.thickness.data());
   }
+  core::Stopwatch sources_clock;
   heat_links.clear();
   thermal::MechanicalHeat mechanical;
   if (contact) {
@@ -1364,6 +1376,7 @@ bool Simulation::State::heat_conduction(bool now) {
     }
     mechanical.plastic = plastic_heat.data();
   }
+  clock.heat_sources += sources_clock.lap();
   const thermal::StepReport r =
       heat->advance(t, g, std::span<double>(s.temperature), mechanical,
                     std::span<const core::ContactHeatLink>(heat_links), dt_mech);
@@ -1444,42 +1457,72 @@ bool Simulation::State::velocities(double dt_next) {
   return true;
 }
 
-// One cycle, t_n -> t_{n+1}: the passes in order. False when the run failed (res says why).
-bool Simulation::State::cycle_once() {
+// One cycle, t_n -> t_{n+1}: the passes in order, each timed on `watch` (which ran since the
+// last pass before). False when the run failed (res says why).
+bool Simulation::State::cycle_once(core::Stopwatch& watch) {
   work_external += pending_external;
   positions();
   t += dt;
   ++cycle;
+  clock.add(Pass::positions, watch.lap());
   loads_and_temperatures();  // the elements see the prescribed temperatures of t_{n+1}
+  clock.add(Pass::loads, watch.lap());
   if (!internal_forces())
     return false;
+  clock.add(Pass::elements, watch.lap());
   if (!heat_conduction(false) || !temperatures_in_range())
     return false;
+  clock.add(Pass::thermal, watch.lap());
   contact_forces();
+  clock.add(Pass::contact, watch.lap());
   double dt_next = 0.0;
-  if (!step_vote(dt_next) || !velocities(dt_next))
+  if (!step_vote(dt_next))
     return false;
+  clock.add(Pass::step_vote, watch.lap());
+  if (!velocities(dt_next))
+    return false;
+  clock.add(Pass::velocities, watch.lap());
   res.dt_last = dt;
   dt = dt_next;
   return true;
 }
 
 // One cycle of a thermal-only run (SOLN 1): a thermal step, cut to land on the end time.
-bool Simulation::State::thermal_cycle_once() {
+bool Simulation::State::thermal_cycle_once(core::Stopwatch& watch) {
   double step = heat->step_length(0.0);
   if (end_time > 0.0 && t + step > end_time)
     step = std::max(end_time - t, 1e-9 * step);
   t += step;
   ++cycle;
   loads_and_temperatures();
+  clock.add(Pass::loads, watch.lap());
   if (!heat_conduction(true))
     return false;
+  clock.add(Pass::thermal, watch.lap());
   res.dt_last = step;
   dt = heat->step_length(0.0);
   return true;
 }
 
-// ---- State in and out -----------------------------------------------------------------------
+// The timing table of the loop so far: the element items' seconds summed by block.
+PassTiming Simulation::State::timing(double loop_seconds) const {
+  TimingSources src;
+  src.solid_block_seconds.assign(model.solid_blocks.size(), 0.0);
+  src.shell_block_seconds.assign(model.shell_blocks.size(), 0.0);
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    for (std::size_t w = 0; w < phases[p].size(); ++w) {
+      const WorkItem& it = phases[p][w];
+      (it.shell ? src.shell_block_seconds : src.solid_block_seconds)[it.block] +=
+          item_seconds[phase_offset[p] + w];
+    }
+  }
+  if (contact)
+    src.contact = contact->timing();
+  if (heat)
+    src.heat_solve_seconds = heat->solve_seconds();
+  src.loop_seconds = loop_seconds;
+  return timing_table(model, clock, src);
+}
 
 void Simulation::State::visit_state(core::StateArchive& a) {
   {
@@ -1672,28 +1715,34 @@ RunResult Simulation::run() {
   const ThreadCount threads(st.options.threads);
   if (!res.restarted)
     st.write_outputs(false);
+  core::Stopwatch loop_clock, watch;
   while (true) {
     if (st.end_time > 0.0 && st.t + st.eps_t >= st.end_time)
       break;
     if (st.model.controls.end_cycle > 0 && st.cycle >= st.model.controls.end_cycle)
       break;
-    if (!(st.thermal_only ? st.thermal_cycle_once() : st.cycle_once()))
+    if (!(st.thermal_only ? st.thermal_cycle_once(watch) : st.cycle_once(watch)))
       break;
     st.write_outputs(false);
+    st.clock.add(Pass::outputs, watch.lap());
     if (!st.thermal_only && !st.books_in_band())
       break;
+    st.clock.add(Pass::books, watch.lap());
     st.sink.progress(st.t, st.end_time, st.cycle, st.dt, st.wall_before + st.wall());
     st.governor.tick();
+    st.clock.add(Pass::outputs, watch.lap());
     const bool stop = st.options.stop != nullptr && *st.options.stop != 0;
     if (checkpoints && (stop || (st.options.checkpoint_cycles > 0 &&
                                  st.cycle % st.options.checkpoint_cycles == 0))) {
       st.write_checkpoint();
+      st.clock.add(Pass::checkpoints, watch.lap());
     }
     if (stop) {
       res.stopped = true;
       break;
     }
   }
+  res.timing = st.timing(loop_clock.lap());
   if (res.ok && !res.stopped) {
     if (!st.state_written)
       st.write_outputs(true);

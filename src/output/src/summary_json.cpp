@@ -169,7 +169,7 @@ std::string summary_json_text(const RunSummary& s) {
   }
   key("distrust");
   if (s.distrust.empty()) {
-    out += "[]\n";
+    out += "[],\n";
   } else {
     out += "[\n";
     for (std::size_t i = 0; i < s.distrust.size(); ++i) {
@@ -179,8 +179,25 @@ std::string summary_json_text(const RunSummary& s) {
       append_number(out, s.distrust[i].time);
       out += i + 1 < s.distrust.size() ? "},\n" : "}\n";
     }
-    out += "  ]\n";
+    out += "  ],\n";
   }
+  key("timing");
+  out += "{\"loop_seconds\": ";
+  append_number(out, s.loop_seconds);
+  out += ", \"passes\": [";
+  for (std::size_t i = 0; i < s.timing.size(); ++i) {
+    const RunSummary::PassTime& x = s.timing[i];
+    out += "\n    {\"group\": ";
+    out += json_string(x.group);
+    out += ", \"pass\": ";
+    out += json_string(x.pass);
+    out += ", \"seconds\": ";
+    append_number(out, x.seconds);
+    out += ", \"share\": ";
+    append_number(out, s.loop_seconds > 0.0 ? x.seconds / s.loop_seconds : 0.0);
+    out += i + 1 < s.timing.size() ? "}," : "}";
+  }
+  out += s.timing.empty() ? "]}\n" : "\n  ]}\n";
   out += "}\n";
   return out;
 }

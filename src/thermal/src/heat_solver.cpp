@@ -12,6 +12,7 @@
 #include <Eigen/SparseCore>
 
 #include "plyform/core/invariant.hpp"
+#include "plyform/core/stopwatch.hpp"
 #include "plyform/thermal/element_conductance.hpp"
 
 namespace plyform::thermal {
@@ -616,6 +617,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
   for (const Held& x : held)
     m.b[static_cast<Eigen::Index>(x.unknown)] = x.diagonal * x.change;
 
+  core::Stopwatch solve_clock;
   if (c.solver == 12) {
     if (!m.analysed) {
       m.iterative.analyzePattern(m.A);
@@ -652,6 +654,7 @@ StepReport HeatSolver::advance(double t1, const Geometry& g, std::span<double> t
     }
     m.dt = m.direct.solve(m.b);
   }
+  solve_seconds_ += solve_clock.lap();
 
   // The books of the step.
   HeatLedger step;

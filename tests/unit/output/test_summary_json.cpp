@@ -257,6 +257,9 @@ RunSummary example_summary() {
   s.deformable_elements = 700;
   s.threads = 2;
   s.warnings = {"line one\nline \"two\"", "tab\there, back\\slash, bell\x07"};
+  s.loop_seconds = 12.0;
+  s.timing = {{"elements", "shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC", 9.0},
+              {"other", "the loop's own checks, between the passes", 3.0}};
   return s;
 }
 
@@ -289,7 +292,11 @@ TEST(SummaryJson, ExpectedText) {
     "line one\nline \"two\"",
     "tab\there, back\\slash, bell\u0007"
   ],
-  "distrust": []
+  "distrust": [],
+  "timing": {"loop_seconds": 12, "passes": [
+    {"group": "elements", "pass": "shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC", "seconds": 9, "share": 0.75},
+    {"group": "other", "pass": "the loop's own checks, between the passes", "seconds": 3, "share": 0.25}
+  ]}
 }
 )";
   EXPECT_EQ(summary_json_text(example_summary()), expected);
@@ -307,6 +314,12 @@ TEST(SummaryJson, ParsesBackToTheSameValues) {
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_EQ(std::get<std::string>(warnings[0].value), s.warnings[0]);
   EXPECT_EQ(std::get<std::string>(warnings[1].value), s.warnings[1]);
+  const Json& timing = member(doc, "timing");
+  EXPECT_EQ(std::get<double>(member(timing, "loop_seconds").value), 12.0);
+  const auto& passes = std::get<JsonArray>(member(timing, "passes").value);
+  ASSERT_EQ(passes.size(), 2u);
+  EXPECT_EQ(std::get<std::string>(member(passes[1], "group").value), "other");
+  EXPECT_EQ(std::get<double>(member(passes[0], "share").value), 0.75);
 }
 
 TEST(SummaryJson, ErrorStatusNonFiniteNumbersAndNoWarnings) {

@@ -57,6 +57,19 @@ struct InitialPenetration {
   std::array<double, 3> move{};
 };
 
+/// Where an interface's share of the run's wall time went (all its passes together), seconds
+/// since the set-up: the search (the move check and the bucket sorts), the projection and
+/// kinematics (segments, points, normals, gaps and slips), the law, and the forces (tractions
+/// to forces, their work, the scatter to the nodes).
+struct InterfaceTiming {
+  std::size_t index = 0;  ///< in Model::contacts
+  core::GlobalId id = 0;  ///< the deck's (_ID keywords; 0 without)
+  double search = 0.0;
+  double projection = 0.0;
+  double law = 0.0;
+  double forces = 0.0;
+};
+
 struct PassRuntime;  // contact_set.cpp
 
 /// The rotational freedoms of the model's nodes (shells): angular velocities of the step just
@@ -128,6 +141,8 @@ class ContactSet {
   [[nodiscard]] std::size_t slave_count() const;
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }
+  /// Each interface's wall seconds in apply() by stage, in the model's order.
+  [[nodiscard]] std::vector<InterfaceTiming> timing() const;
   /// Saves or restores what the passes carry from cycle to cycle (checkpoints): each slave
   /// node's law history, segment, shape functions, frame, slip and forces, the candidate lists
   /// of the last search and the positions it was made at, the energy books.

@@ -18,6 +18,7 @@
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
+#include "plyform/engine/pass_timing.hpp"
 #include "plyform/rigid/rigid_bodies.hpp"
 #include "plyform/thermal/heat_solver.hpp"
 
@@ -161,6 +162,8 @@ struct RunResult {
   long thermal_steps = 0;
   long thermal_iterations = 0;
   thermal::HeatLedger heat;
+  /// Where this process's time loop spent its wall time, pass by pass (pass_timing.hpp).
+  PassTiming timing;
 };
 
 /// The run of one model. It owns the whole state of the run (simulation.cpp, `State`):

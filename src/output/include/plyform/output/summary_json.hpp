@@ -48,6 +48,17 @@ struct RunSummary {
     double time = 0.0;
   };
   std::vector<Distrust> distrust;
+  /// Where the time loop's wall time went (written as `"timing": {"loop_seconds": ...,
+  /// "passes": [{"group": ..., "pass": ..., "seconds": ..., "share": ...}]}`, share the fraction
+  /// of loop_seconds): the element kernels by formulation and law, each contact interface by
+  /// stage, the thermal step, the nodal passes and the outputs, in the cycle's order.
+  struct PassTime {
+    std::string group;
+    std::string pass;
+    double seconds = 0.0;
+  };
+  double loop_seconds = 0.0;
+  std::vector<PassTime> timing;
 };
 
 /// The JSON text of a summary (an object, two-space indentation, ending with a newline).

@@ -81,6 +81,8 @@ class HeatSolver {
   [[nodiscard]] const HeatLedger& ledger() const { return ledger_; }
   [[nodiscard]] long steps() const { return steps_; }
   [[nodiscard]] long iterations() const { return iterations_; }
+  /// Wall seconds in the linear solves (factorisation and solution) so far.
+  [[nodiscard]] double solve_seconds() const { return solve_seconds_; }
   [[nodiscard]] std::size_t unknowns() const { return nodes_.size(); }
   /// The node of each unknown (local node indices); thick thermal shells' faces after the
   /// nodes' own unknowns.
@@ -132,6 +134,7 @@ class HeatSolver {
   double last_dt_ = 0.0;  // the length the matrix was assembled for
   long steps_ = 0;
   long iterations_ = 0;
+  double solve_seconds_ = 0.0;
   long since_assembly_ = 0;
   HeatLedger ledger_;
 };
