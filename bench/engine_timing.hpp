@@ -26,6 +26,13 @@ inline double element_cycles_per_second(const core::Model& m, long cycles, int t
     std::fprintf(stderr, "run failed: %s\n", r.error.c_str());
     std::exit(1);
   }
+  if (r.thread_reductions > 0) {
+    // The thread governor saw the cores shared and ran part of the benchmark on one thread:
+    // the figure is not the requested thread count's.
+    std::fprintf(stderr, "note: %d thread(s) requested, 1 thread for %.3g of %.3g s (%d time%s)\n",
+                 threads, r.reduced_thread_seconds, r.wall_seconds, r.thread_reductions,
+                 r.thread_reductions == 1 ? "" : "s");
+  }
   return r.element_cycles_per_second;
 }
 
