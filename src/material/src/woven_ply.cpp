@@ -161,6 +161,11 @@ WovenPlyState woven_ply_state(const Ply& m, const double* h) {
 
 void shell_update(const Ply& m, std::size_t n, const ShellPoints& pts) {
   const int nf = m.families;
+  // The families' initial angles, the same at every point (a per-point atan2, sin and cos cost
+  // some 5 % of the hot draw).
+  double initial[2] = {0.0, 0.0};
+  for (int k = 0; k + 1 < nf; ++k)
+    initial[k] = initial_angle(m, k, k + 1);
   for (std::size_t p = 0; p < n; ++p) {
     double* h = pts.history + H::count * p;
     const double t = pts.temperature != nullptr ? pts.temperature[p] : 0.0;
@@ -244,7 +249,7 @@ void shell_update(const Ply& m, std::size_t n, const ShellPoints& pts) {
       const double* a = dir[k];
       const double* b = dir[k + 1];
       const Angle th = angle_between(a, b);
-      const double gamma = initial_angle(m, k, k + 1) - th.th;
+      const double gamma = initial[k] - th.th;
       double tau = 0.0;
       if (sh.meth == 3 && !sh.stress.curve.empty()) {
         // Elasto-plastic: tau = sign min(|tau_tr|, c(kappa + |tau_tr| / G)), the loading curve c
