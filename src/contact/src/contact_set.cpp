@@ -27,7 +27,8 @@ double chunked_sum(std::size_t n, std::vector<double>& part, F&& f) {
   constexpr std::size_t kChunk = 1024;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   part.resize(chunks);
-#pragma omp parallel for schedule(static)
+  // One chunk: the team has nothing to share (its start-up alone costs some microseconds).
+#pragma omp parallel for schedule(static) if (chunks > 1)
   for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
     const auto c = static_cast<std::size_t>(lc);
     double s = 0.0;
@@ -1308,7 +1309,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     // parallel (same arithmetic per node, so the same bits for any thread count).
     constexpr std::size_t kLawChunk = 4096;
     const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (chunks > 1)
     for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
       const std::size_t b = static_cast<std::size_t>(lc) * kLawChunk;
       const std::size_t e = std::min(ns, b + kLawChunk);
