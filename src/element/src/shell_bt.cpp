@@ -161,14 +161,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         spread_temperatures<1>(b, at0, unip, t_point, eth_point);
       }
       if constexpr (Law::needs_material_axes) {
-        const double d12[3] = {f.x[1][k_el] - f.x[0][k_el], f.y[1][k_el] - f.y[0][k_el],
-                               f.z[1][k_el] - f.z[0][k_el]};
-        const double e1[3] = {f.e[0][k_el], f.e[1][k_el], f.e[2][k_el]};
-        const double e2[3] = {f.e[3][k_el], f.e[4][k_el], f.e[5][k_el]};
-        const double e3[3] = {f.e[6][k_el], f.e[7][k_el], f.e[8][k_el]};
-        const double angle = material_angle<Law>(mat, block, e, d12, e1, e2, e3);
-        std::fill_n(&b.cos_t[at0], unip, std::cos(angle));
-        std::fill_n(&b.sin_t[at0], unip, std::sin(angle));
+        set_material_axes<Law>(mat, block, e, f, k_el, b, at0, unip);
       }
       if constexpr (material::law_needs_spin<Law>())
         std::fill_n(&b.spin[at0], unip, phi);

@@ -208,15 +208,7 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         spread_temperatures<4>(b, at_el, unip, t_point, eth_point);
       }
       if constexpr (Law::needs_material_axes) {
-        // The element's axes, as the BT kernel sets them, at every point.
-        const double d12[3] = {f.x[1][k_el] - f.x[0][k_el], f.y[1][k_el] - f.y[0][k_el],
-                               f.z[1][k_el] - f.z[0][k_el]};
-        const double e1[3] = {f.e[0][k_el], f.e[1][k_el], f.e[2][k_el]};
-        const double e2[3] = {f.e[3][k_el], f.e[4][k_el], f.e[5][k_el]};
-        const double e3[3] = {f.e[6][k_el], f.e[7][k_el], f.e[8][k_el]};
-        const double angle = material_angle<Law>(mat, block, e, d12, e1, e2, e3);
-        std::fill_n(&b.cos_t[at_el], ppe, std::cos(angle));
-        std::fill_n(&b.sin_t[at_el], ppe, std::sin(angle));
+        set_material_axes<Law>(mat, block, e, f, k_el, b, at_el, ppe);
       }
     }
     update_points<Law>(mat, st, ppe * c0, ppe * chunk, b, thermal, plastic_heat, expands);

@@ -189,31 +189,34 @@ inline void thickness_temperatures(const core::ShellBlock& block, const NodalVie
   }
 }
 
-// The angle of the material's axis a from the frame's e1, for laws with material axes:
-// AOPT 0 along the edge from node 1 to node 2 (d12), AOPT 2 the global vector a, AOPT 3 v x n,
-// all projected on the shell; AOPT 0 and 3 then turn about the normal by the element card's
-// BETA where it is not zero, else by the material's angle (MANGL).
-template <class Law, class M>
-inline double material_angle(const M& mat, const core::ShellBlock& block, std::size_t e,
-                             const double d12[3], const double e1[3], const double e2[3],
-                             const double e3[3]) {
+// The material axes of lane k's element (element e) at its n points from at0, as the angle's
+// cosine and sine: AOPT 0 along the edge from node 1 to node 2, AOPT 2 the global vector a,
+// AOPT 3 v x n, all projected on the shell; AOPT 0 and 3 then turn about the normal by the
+// element card's BETA where it is not zero, else by the material's angle (MANGL).
+template <class Law, class M, std::size_t N, std::size_t P>
+inline void set_material_axes(const M& mat, const core::ShellBlock& block, std::size_t e,
+                              const ChunkFrames<N>& f, std::size_t k, PointBuffers<P>& b,
+                              std::size_t at0, std::size_t n) {
   const material::MaterialAxes axes = Law::axes(mat);
-  double a3[3];
-  for (int d = 0; d < 3; ++d)
-    a3[d] = axes.aopt == 2 ? axes.a[d] : d12[d];
-  if (axes.aopt == 3) {
-    a3[0] = axes.v[1] * e3[2] - axes.v[2] * e3[1];
-    a3[1] = axes.v[2] * e3[0] - axes.v[0] * e3[2];
-    a3[2] = axes.v[0] * e3[1] - axes.v[1] * e3[0];
+  double a3[3] = {f.x[1][k] - f.x[0][k], f.y[1][k] - f.y[0][k], f.z[1][k] - f.z[0][k]};
+  if (axes.aopt == 2) {
+    for (int d = 0; d < 3; ++d)
+      a3[d] = axes.a[d];
   }
-  const double ax = a3[0] * e1[0] + a3[1] * e1[1] + a3[2] * e1[2];
-  const double ay = a3[0] * e2[0] + a3[1] * e2[1] + a3[2] * e2[2];
+  if (axes.aopt == 3) {
+    a3[0] = axes.v[1] * f.e[8][k] - axes.v[2] * f.e[7][k];
+    a3[1] = axes.v[2] * f.e[6][k] - axes.v[0] * f.e[8][k];
+    a3[2] = axes.v[0] * f.e[7][k] - axes.v[1] * f.e[6][k];
+  }
+  const double ax = a3[0] * f.e[0][k] + a3[1] * f.e[1][k] + a3[2] * f.e[2][k];
+  const double ay = a3[0] * f.e[3][k] + a3[1] * f.e[4][k] + a3[2] * f.e[5][k];
   double angle = std::atan2(ay, ax);
   if (axes.aopt != 2) {
     const double beta = block.material_angle.empty() ? 0.0 : block.material_angle[e];
     angle += beta != 0.0 ? beta : axes.angle;
   }
-  return angle;
+  std::fill_n(&b.cos_t[at0], n, std::cos(angle));
+  std::fill_n(&b.sin_t[at0], n, std::sin(angle));
 }
 
 // One law call over the n points from q0 (the chunk's), with what the law reads; then the
