@@ -63,16 +63,32 @@ double number(const std::string& json, const std::string& key) {
   return at == std::string::npos ? 0.0 : std::stod(json.substr(at + key.size() + 3));
 }
 
-TEST(RunSummary, CountsShellsAndRatesTheDeformableElements) {
+// `plyform run` on a deck's text: its exit code, stdout, stderr and summary.json.
+struct RunOutput {
+  int code = 0;
+  std::string out, err, json;
+};
+RunOutput run_text(const std::string& deck_text, int threads = 0) {
   test::TempDir dir;
   RunOptions o;
-  o.deck = dir.write("sheet_tool.k", kDeck);
+  o.deck = dir.write("deck.k", deck_text);
   o.output = dir.path() / "out";
   o.progress = false;
+  o.threads = threads;
   std::ostringstream out, err;
-  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
+  RunOutput r;
+  r.code = run_deck(o, out, err);
+  r.out = out.str();
+  r.err = err.str();
   std::ifstream in(*o.output / "summary.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  r.json.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return r;
+}
+
+TEST(RunSummary, CountsShellsAndRatesTheDeformableElements) {
+  const RunOutput r = run_text(kDeck);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string& json = r.json;
   EXPECT_EQ(number(json, "elements"), 5.0) << json;
   EXPECT_EQ(number(json, "deformable_elements"), 4.0) << json;
   const double cycles = number(json, "cycles"), wall = number(json, "wall_seconds");
@@ -87,17 +103,9 @@ TEST(RunSummary, CountsShellsAndRatesTheDeformableElements) {
 // magnitude: a negative one asks for consistency, which plyform always has) when --threads is
 // not given, --threads when it is, 1 when neither says.
 double threads_of_run(const std::string& deck_text, int threads) {
-  test::TempDir dir;
-  RunOptions o;
-  o.deck = dir.write("threads.k", deck_text);
-  o.output = dir.path() / "out";
-  o.progress = false;
-  o.threads = threads;
-  std::ostringstream out, err;
-  EXPECT_EQ(run_deck(o, out, err), 0) << err.str();
-  std::ifstream in(*o.output / "summary.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return number(json, "threads");
+  const RunOutput r = run_text(deck_text, threads);
+  EXPECT_EQ(r.code, 0) << r.err;
+  return number(r.json, "threads");
 }
 
 std::string with_parallel_card(const std::string& card) {
@@ -132,15 +140,9 @@ TEST(RunSummary, TimingAccountsForTheWholeLoopByKernelAndInterfaceStage) {
   // The sheet and tool with a contact between them (the sheet's part the slave).
   std::string text = kDeck;
   text.insert(text.find("*END"), "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,2,3,3\n");
-  test::TempDir dir;
-  RunOptions o;
-  o.deck = dir.write("timed.k", text);
-  o.output = dir.path() / "out";
-  o.progress = false;
-  std::ostringstream out, err;
-  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
-  std::ifstream in(*o.output / "summary.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const RunOutput r = run_text(text);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string& json = r.json;
   const double loop = number(json, "loop_seconds"), wall = number(json, "wall_seconds");
   ASSERT_GT(loop, 0.0) << json;
   EXPECT_LE(loop, wall) << json;
@@ -163,7 +165,7 @@ TEST(RunSummary, TimingAccountsForTheWholeLoopByKernelAndInterfaceStage) {
       << json;
   for (const char* stage : {"search", "projection and kinematics", "law", "forces"})
     EXPECT_EQ(count(json, std::string("\"pass\": \"contact 1: ") + stage + "\""), 1u) << json;
-  EXPECT_NE(out.str().find("timing: the time loop's"), std::string::npos) << out.str();
+  EXPECT_NE(r.out.find("timing: the time loop's"), std::string::npos) << r.out;
 }
 
 TEST(RunSummary, CommandLineThreadsWinOverTheDeck) {
