@@ -95,12 +95,14 @@ void tiebreak_update(const core::Tiebreak& tb, const law::Law& law, const law::B
       const double ds = std::hypot(in.slip_x[i], in.slip_y[i]);
       const double limit = sliding_limit(tb, p, pressure, in.temperature[i], ds / in.dt);
       if (tau_sq > limit * limit) {
-        // Return to the friction limit; the inelastic slip dissipates limit * |slip_p|.
+        // Return to the friction limit; the inelastic slip dissipates the step's mean
+        // traction along it, kt (e_old + e_new) / 2 . slip_p (the law's rule, detail/step.hpp).
         const double scale = limit > 0.0 ? limit / std::sqrt(tau_sq) : 0.0;
         tau0 *= scale;
         tau1 *= scale;
         const double e0 = kt > 0.0 ? -tau0 / kt : 0.0, e1 = kt > 0.0 ? -tau1 / kt : 0.0;
-        h.e_friction[i] += limit * std::hypot(s0 - e0, s1 - e1) * a;
+        h.e_friction[i] +=
+            0.5 * kt * ((h.slip_x[i] + e0) * (s0 - e0) + (h.slip_y[i] + e1) * (s1 - e1)) * a;
         s0 = e0;
         s1 = e1;
         tau_sq = tau0 * tau0 + tau1 * tau1;

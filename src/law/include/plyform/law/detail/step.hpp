@@ -78,6 +78,22 @@ inline void clear(double& x) {
     x = 0.0;
 }
 
+/// A node leaving compressive contact lets go of its stick spring: the traction falls to zero
+/// over the step, so the spring's energy, less the trapezoid's work on the step's slip, is
+/// dissipated, kt e_old . (e_old + slip) (the trapezoid rule of the Coulomb return with
+/// e_new = 0).
+template <class H, class In>
+inline void release_stick_spring(const In& in, const H& h) {
+  const double e0 = h.slip(0);
+  const double e1 = h.slip(1);
+  if (e0 == 0.0 && e1 == 0.0)
+    return;
+  const double kt = in.k_tangent();
+  h.e_friction() += 0.5 * kt * (e0 * (e0 + in.slip(0)) + e1 * (e1 + in.slip(1))) * in.area();
+  h.slip(0) = 0.0;
+  h.slip(1) = 0.0;
+}
+
 template <class H, class In>
 inline Response step(const Parameters& p, const Prepared& q, const In& in, const H& h) {
   Response r;
@@ -97,8 +113,7 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
     // No force of any kind, damping included (the paper's reason for its own damping).
     if (s != s_old) {
       h.set_state(s);
-      clear(h.slip(0));
-      clear(h.slip(1));
+      release_stick_spring(in, h);
       clear(h.opening(0));
       clear(h.opening(1));
     }
@@ -154,8 +169,7 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
       h.set_state(NodeState::detached);
       if (beta_in != 0.0)
         h.beta() = 0.0;
-      clear(h.slip(0));
-      clear(h.slip(1));
+      release_stick_spring(in, h);
       return r;
     }
   }
@@ -224,6 +238,8 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
         mu *= 1.0 - beta;
       double& s0 = h.slip(0);
       double& s1 = h.slip(1);
+      const double e0 = s0;  // the elastic slip at the step's start
+      const double e1 = s1;
       const double trial0 = s0 + ds0;
       const double trial1 = s1 + ds1;
       tau0 = -kt * trial0;
@@ -233,7 +249,13 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
       if (p.friction_limit > 0.0 && limit > p.friction_limit)
         limit = p.friction_limit;
       if (tau_sq > limit * limit) {
-        // Return to the Coulomb cone; the inelastic slip dissipates limit * |slip_p|.
+        // Return to the Coulomb cone. The inelastic slip dissipates the step's mean traction
+        // along it, kt (e_old + e_new) / 2 . slip_p: what the contact's work (the trapezoid
+        // of the forces, docs/contact.md) takes less what the stick spring keeps, to
+        // round-off. Sliding on the cone at a steady pressure that is limit |slip_p|; where the
+        // pressure rises from zero within a step (a node that touches down while sliding) it
+        // is half of it, and a node that lifts off hands its spring's energy to friction here
+        // too (below).
         const double scale = limit / std::sqrt(tau_sq);
         tau0 *= scale;
         tau1 *= scale;
@@ -241,15 +263,14 @@ inline Response step(const Parameters& p, const Prepared& q, const In& in, const
         s1 = -tau1 / kt;
         const double sp0 = trial0 - s0;
         const double sp1 = trial1 - s1;
-        h.e_friction() += limit * std::sqrt(sp0 * sp0 + sp1 * sp1) * area;
+        h.e_friction() += 0.5 * kt * ((e0 + s0) * sp0 + (e1 + s1) * sp1) * area;
       } else {
         s0 = trial0;
         s1 = trial1;
       }
       stored_t = 0.5 * kt * (s0 * s0 + s1 * s1);
     } else {
-      clear(h.slip(0));
-      clear(h.slip(1));
+      release_stick_spring(in, h);
     }
   } else {
     // Newtonian film: in contact and, while bonded, in the cohesive zone.
