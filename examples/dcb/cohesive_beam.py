@@ -7,7 +7,8 @@ One arm is an Euler-Bernoulli beam `EI w'''' = -q(w)`; by symmetry the two arms 
 `q = B t(u)` with the RCCM law in its rate-independent limit (contact-law.md):
 - tension (u > 0): `t = C_N beta^2 u`, `beta = min(beta_history, omega / (C_N u^2))`, so the
   traction rises to sigma_max at `u_c = sigma_max / C_N` and then falls as `sigma_max (u_c/u)^3`;
-- compression (u < 0): the contact penalty per area, `t = k_pen u`.
+- compression (u < 0): the contact penalty per area, or the adhesive layer's C_N beta^2 where
+  that is stiffer (a bonded node in compression, contact-law.md), `t = max(k_pen, C_N beta^2) u`.
 The tip opening delta is raised step by step (the damage is irreversible: each point keeps the
 smallest beta it has seen); at each step Newton's method solves the beam by central finite
 differences, spacing h, on the bonded length a0 < x < L. The free cantilever in front is exact:
@@ -30,10 +31,11 @@ def traction(u, beta_hist, cn, omega, k_pen):
     """Traction (tension positive), its derivative in u, and the beta it implies."""
     beta = np.minimum(beta_hist, np.where(u > 0, omega / np.maximum(cn * u * u, 1e-300), 1.0))
     beta = np.minimum(beta, 1.0)
-    t = np.where(u > 0, cn * beta ** 2 * u, k_pen * u)
+    k_comp = np.maximum(k_pen, cn * beta ** 2)
+    t = np.where(u > 0, cn * beta ** 2 * u, k_comp * u)
     damaging = (u > 0) & (beta < beta_hist)  # on the softening branch: t = omega^2 / (C_N u^3)
     dt = np.where(u > 0, np.where(damaging, -3.0 * t / np.maximum(u, 1e-300), cn * beta ** 2),
-                  k_pen)
+                  k_comp)
     return t, dt, beta
 
 

@@ -4,7 +4,8 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--dx DX] [--ny NY] [--end T] [--every D] [--ihq N]
-                        [--soften F] [--width B] [--elform N] [--nu NU] [--name NAME]
+                        [--soften F] [--width B] [--elform N] [--nu NU] [--length L]
+                        [--name NAME]
 
 Two elastic shell arms (each its own mesh, 1.5 mm thick, 100 mm long, B = 20 mm wide) whose
 surfaces touch at t = 0; the upper arm is the slave side of *CONTACT_ONE_WAY_SURFACE_TO_SURFACE
@@ -15,7 +16,9 @@ a total opening DELTA. Elements DX long along the arms, NY across the width (NY 
 one element wide). --soften F divides C_N by F and sigma_max by sqrt(F): the same G_Ic with a
 cohesive zone F^(1/4) times longer (resolved by coarser elements). --ihq 0: the parts take the
 deck's default (viscous) hourglass control. --width B: the specimen's width (20 mm). --elform N:
-the arms' shell formulation (2, Belytschko-Tsay, by default; 16, fully integrated).
+the arms' shell formulation (2, Belytschko-Tsay, by default; 16, fully integrated). --length L:
+the arms' length (100 mm; a run stopped early needs only some 10 mm of bonded ligament beyond
+the crack's reach, 1/lambda being 1.6 mm).
 Poisson's ratio 0, so that beam theory holds for any width (see README.md).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
@@ -62,11 +65,11 @@ def ids(values):
     return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
 
 
-def arm(first_node, first_elem, part, nx, ny, z, width):
+def arm(first_node, first_elem, part, nx, ny, z, width, length):
     nodes, elems = [], []
     for j in range(ny + 1):
         for i in range(nx + 1):
-            nodes.append((first_node + j * (nx + 1) + i, LENGTH * i / nx, width * j / ny, z))
+            nodes.append((first_node + j * (nx + 1) + i, length * i / nx, width * j / ny, z))
     for j in range(ny):
         for i in range(nx):
             a = first_node + j * (nx + 1) + i
@@ -86,11 +89,12 @@ def tip_curve(end, delta, ramp):
     return pts, v
 
 
-def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2, nu=NU):
+def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2, nu=NU,
+         length=LENGTH):
     cn, smax = CN / soften, SMAX / soften ** 0.5  # the same omega = G_Ic
-    nx = round(LENGTH / dx)
-    lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS, width)
-    upper_nodes, upper_elems = arm(100001, 100001, 2, nx, ny, 0.5 * THICKNESS, width)
+    nx = round(length / dx)
+    lower_nodes, lower_elems = arm(1, 1, 1, nx, ny, -0.5 * THICKNESS, width, length)
+    upper_nodes, upper_elems = arm(100001, 100001, 2, nx, ny, 0.5 * THICKNESS, width, length)
     curve, v_tip = tip_curve(end, delta, min(RAMP, 0.25 * end))
     k = ["*KEYWORD\n", "*TITLE\n", f"plyform DCB (dx {dx}, {ny} across)\n"]
     k += ["*CONTROL_TERMINATION\n", card(end)]
@@ -124,7 +128,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2
         if (i + 0.5) * dx > A0:
             k.append(card(a, b, c, d))
     tips = lambda nodes: [n for n, x, *_ in nodes if x == 0.0]
-    far = [n for n, x, *_ in lower_nodes if abs(x - LENGTH) < 1e-9]
+    far = [n for n, x, *_ in lower_nodes if abs(x - length) < 1e-9]
     k += ["*SET_NODE_LIST_TITLE\nupper tip\n", card(1)] + ids(tips(upper_nodes))
     k += ["*SET_NODE_LIST_TITLE\nlower tip\n", card(2)] + ids(tips(lower_nodes))
     k += ["*SET_NODE_LIST_TITLE\nfar end of the lower arm\n", card(3)] + ids(far)
@@ -149,7 +153,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2
     k += ids(float(v) if isinstance(v, float) else v for v in uc)
     k += ["*END\n"]
     params = {
-        "length": LENGTH, "width": width, "thickness": THICKNESS, "a0": A0, "E": E, "nu": nu,
+        "length": length, "width": width, "thickness": THICKNESS, "a0": A0, "E": E, "nu": nu,
         "rho": RHO, "cn": cn, "sigma_max": smax, "eta": ETA, "vdc": VDC, "delta": delta,
         "end": end, "ramp": RAMP, "elform": elform, "v_tip": v_tip, "dx": dx, "ny": ny, "interface": 1,
         "tip_upper": tip_upper, "tip_lower": tip_lower, "path_nodes": path,
@@ -161,7 +165,7 @@ def deck(dx, ny, end, delta, every=5.0, ihq=4, soften=1.0, width=WIDTH, elform=2
 def main(argv):
     outdir, dx, ny, end, name, every, ihq, soften = ".", 0.5, 1, END, "dcb", 5.0, 4, 1.0
     elform, nu = 2, NU
-    width = WIDTH
+    width, length = WIDTH, LENGTH
     args = list(argv)
     while args:
         a = args.pop(0)
@@ -173,6 +177,8 @@ def main(argv):
             end = float(args.pop(0))
         elif a == "--width":
             width = float(args.pop(0))
+        elif a == "--length":
+            length = float(args.pop(0))
         elif a == "--soften":
             soften = float(args.pop(0))
         elif a == "--ihq":
@@ -192,7 +198,8 @@ def main(argv):
         else:
             outdir = a
     os.makedirs(outdir, exist_ok=True)
-    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften, width, elform, nu)
+    text, params = deck(dx, ny, end, DELTA * end / END, every, ihq, soften, width, elform, nu,
+                        length)
     with open(os.path.join(outdir, name + ".k"), "w") as f:
         f.write(text)
     with open(os.path.join(outdir, name + ".json"), "w") as f:
