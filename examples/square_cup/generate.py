@@ -4,7 +4,7 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
-                        [--dt2ms DT] [--elform 2|16] [--plain] [--name NAME]
+                        [--dt2ms DT] [--elform 2|16] [--plain] [--backup] [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -24,7 +24,9 @@ core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/
 --dt2ms DT: mass scaling to the time step DT (0: none). --elform 16: the blank's shells fully
 integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-Tsay.
 --plain: the deck as a user writes it: every setting the solver leaves to its defaults (no
-*CONTROL_CONTACT, no *HOURGLASS, no contact but the tools' and the two cohesive ones).
+*HOURGLASS: the viscous default; the shipped deck sets only the stiffness form, IHQ 4, which
+`plyform check` asks for on one-point shells under a cohesive interface). --backup: PENOPT 3
+and two plain contacts of the core's nodes against the skins (the restart tests' coarse deck).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -242,9 +244,9 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     k = ["*KEYWORD\n", "*TITLE\n", f"plyform square cup ({layers} layer{'s' if layers > 1 else ''},"
          f" {n} elements along the quarter's edge)\n"]
     k += ["*CONTROL_TERMINATION\n", card(end_time or end)]
-    # PENOPT 3: every contact's penalty from its slave side (see the plain contacts below; a
-    # cohesive interface with PENOPT blank takes the stiffer side's penalty by itself).
-    if not PLAIN:
+    # --backup (the restart tests' coarse deck only, see below): PENOPT 3, every contact's
+    # penalty from its slave side.
+    if BACKUP:
         k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3)]
     k += ["*CONTROL_TIMESTEP\n", card(0.0, 0.9, 0, 0.0, -dt2ms if dt2ms > 0 else 0.0)]
     k += ["*DATABASE_BINARY_D3PLOT\n", card(end / 15)]
@@ -314,15 +316,13 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
             k += ["*USER_INTERFACE_FRICTION\n", card(cid, len(uc), 0)]
             k += ids(float(v) if isinstance(v, float) else v for v in uc)
         # The cohesive contacts are one way: skin nodes against core segments, and each keeps
-        # the core's nodes out of its skin by its guard pass (docs/contact.md). This deck still
-        # carries what it needed before the guard, a second, plain contact of the core's nodes
-        # against each skin (frictionless, VDC 0, the penalty the core's scaled by SFS to about
-        # the skin's) and PENOPT 3: without them the upper skin's interface books 0.8 % of the
-        # external work more friction and damping than its work (the guard and the cohesive
-        # pass take turns at the radii; README.md, a defect named, issue 29). `--plain` leaves
-        # them out.
+        # the core's nodes out of its skin by its guard pass; with PENOPT blank each takes the
+        # stiffer side's penalty (docs/contact.md). Nothing else holds the layers. --backup
+        # adds what the deck carried before (PENOPT 3 and a plain, frictionless contact of the
+        # core's nodes against each skin, the core's penalty scaled by SFS to about the skin's):
+        # the restart tests' deck at n 10 needs it (a defect, named in README.md, issue 29).
         sfs = 1969.0 / (0.1 * CORE_E / (3 * (1 - 2 * CORE["nu"])) / (BLANK_HALF / n * 2 ** 0.5))
-        backup = () if PLAIN else ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1))
+        backup = ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1)) if BACKUP else ()
         for cid, title, master in backup:
             k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
             k += [card(2, master, 3, 3), card(0.0, 0.0, 0.0, 0.0, 0.0), card(round(sfs, 1), 1.0)]
@@ -364,6 +364,7 @@ def write_deck(outdir, name, text, params):
 ELFORM = 2
 # --plain: no setting beyond the defaults (see the module's docstring).
 PLAIN = False
+BACKUP = False
 
 
 def main(argv):
@@ -395,6 +396,8 @@ def main(argv):
             globals()["ELFORM"] = int(args.pop(0))
         elif a == "--plain":
             globals()["PLAIN"] = True
+        elif a == "--backup":
+            globals()["BACKUP"] = True
         elif a == "--name":
             name = args.pop(0)
         elif a.startswith("-"):

@@ -5,7 +5,8 @@
 
 restart_shell.k  the three-layer square cup (examples/square_cup: rigid punch, die and blank
                  holder, friction contacts, cohesive interfaces between the layers), coarse
-                 (10 elements along the quarter blank's edge) and drawn 2 mm; a checkpoint
+                 (10 elements along the quarter blank's edge, with --backup: at that mesh
+                 the layers need the backup contacts, issue 29) and drawn 2 mm; a checkpoint
                  every 1000 cycles; spcforc.csv, matsum.csv, sleout.csv and elout.csv (the
                  first and last shell of the blank's first layer) on glstat's interval.
 restart_solid.k  decks/block_threads.k (576 elastic hex8, one face clamped, the other pulled,
@@ -84,7 +85,7 @@ def main(argv):
     os.makedirs(out, exist_ok=True)
     py = sys.executable
     subprocess.run([py, os.path.join(EXAMPLES, "square_cup", "generate.py"), out, "--layers", "3",
-                    "--n", "10", "--depth", "2", "--name", "restart_shell"],
+                    "--n", "10", "--depth", "2", "--backup", "--name", "restart_shell"],
                    check=True, stdout=subprocess.DEVNULL)
     with_checkpoints(os.path.join(out, "restart_shell.k"), 1000)
     with_part_outputs(os.path.join(out, "restart_shell.k"), history="SHELL")
