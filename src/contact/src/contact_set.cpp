@@ -90,6 +90,7 @@ struct PassRuntime {
   std::vector<std::size_t> nb_start;
   std::vector<core::Index> nb;
   std::vector<unsigned char> folded;
+  std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
   std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
   std::vector<double> tracked_ref;         // their positions at the last search
   double margin = 0.0;
@@ -245,6 +246,8 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
           pr->nb_start[sg + 1] = pr->nb.size();
         }
         pr->folded.assign(nseg, 0);
+        pr->fold_centroid.assign(3 * nseg, 0.0);
+        pr->fold_normal.assign(3 * nseg, 0.0);
       }
       pr->seg_radius.resize(nseg);
       double max_radius = 0.0;
@@ -654,28 +657,14 @@ constexpr double kFoldSin2 = 7.6e-5;  // sin^2(0.5 degree)
 void update_folds(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nseg = pr.folded.size();
-  thread_local std::vector<double> c, n;
-  c.resize(3 * nseg);
-  n.resize(3 * nseg);
+  std::vector<double>& c = pr.fold_centroid;
+  std::vector<double>& n = pr.fold_normal;
   for (std::size_t sg = 0; sg < nseg; ++sg) {
     const core::Index* q = &cp.segments[4 * sg];
-    const double* x0 = at(packed, q[0]);
-    const double* x1 = at(packed, q[1]);
-    const double* x2 = at(packed, q[2]);
-    const double* x3 = at(packed, q[3]);
-    double d1[3], d2[3];
-    for (int i = 0; i < 3; ++i) {
-      c[3 * sg + i] = 0.25 * (x0[i] + x1[i] + x2[i] + x3[i]);
-      d1[i] = x2[i] - x0[i];
-      d2[i] = x3[i] - x1[i];
-    }
-    double* ns = &n[3 * sg];
-    ns[0] = d1[1] * d2[2] - d1[2] * d2[1];
-    ns[1] = d1[2] * d2[0] - d1[0] * d2[2];
-    ns[2] = d1[0] * d2[1] - d1[1] * d2[0];
-    const double len = std::sqrt(ns[0] * ns[0] + ns[1] * ns[1] + ns[2] * ns[2]);
-    const double inv = len > 0.0 ? 1.0 / len : 0.0;
-    ns[0] *= inv, ns[1] *= inv, ns[2] *= inv;
+    for (int i = 0; i < 3; ++i)
+      c[3 * sg + i] = 0.25 * (at(packed, q[0])[i] + at(packed, q[1])[i] + at(packed, q[2])[i] +
+                              at(packed, q[3])[i]);
+    segment_normal(q, packed, &n[3 * sg]);
   }
   for (std::size_t sg = 0; sg < nseg; ++sg) {
     unsigned char f = 0;
@@ -693,14 +682,8 @@ void update_folds(PassRuntime& pr, const double* packed) {
 
 // Whether segment s rises towards the slave's side of the plane of L (a valley between them,
 // seen from the slave): its centroid lies on that side.
-inline bool rises_towards(const PassRuntime& pr, core::Index s, const Located& L,
-                          const double* packed) {
-  const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(s)];
-  double c[3] = {0.0, 0.0, 0.0};
-  for (int j = 0; j < 4; ++j) {
-    const double* x = at(packed, q[j]);
-    c[0] += 0.25 * x[0], c[1] += 0.25 * x[1], c[2] += 0.25 * x[2];
-  }
+inline bool rises_towards(const PassRuntime& pr, core::Index s, const Located& L) {
+  const double* c = &pr.fold_centroid[3 * static_cast<std::size_t>(s)];  // this cycle's
   const double* n = L.sp.normal;
   const double above =
       (c[0] - L.sp.x[0]) * n[0] + (c[1] - L.sp.x[1]) * n[1] + (c[2] - L.sp.x[2]) * n[2];
@@ -736,7 +719,7 @@ core::Index deeper_across_valley(const PassRuntime& pr, std::size_t k, core::Ind
   const Located on_cur = best;
   for (std::size_t j = pr.nb_start[cu]; j < pr.nb_start[cu + 1]; ++j) {
     const core::Index s = pr.nb[j];
-    if (!rises_towards(pr, s, on_cur, packed) || out_of_reach(pr, s, p, tol, packed))
+    if (!rises_towards(pr, s, on_cur) || out_of_reach(pr, s, p, tol, packed))
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     if (L.sp.degenerate || L.sp.outside > tol ||
