@@ -750,6 +750,14 @@ core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_loc
       return deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
     }
   }
+  // A node that has touched the master takes a new segment only within half the tolerance by
+  // which it keeps one (a node that never touched it, within all of it, as LS-DYNA's MAXPAR):
+  // at a master's edge (a solid's corner, a layer's free edge) a node that just left its
+  // segment there would otherwise take it back the next cycle, hunting between it and the side
+  // face (or nothing) beyond: free, it sinks under its load; back on the segment, it is pushed
+  // out of a depth it sank to with no force on it, and the spring gives the model that energy.
+  const bool touched = static_cast<law::NodeState>(pr.hist.state[k]) != law::NodeState::approaching;
+  const double acquire = touched ? 0.5 * tol : tol;
   double best_score = kInf, best_facing = kInf;
   bool best_faces = false;
   core::Index found = -1;
@@ -765,7 +773,7 @@ core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_loc
     if (out_of_reach(pr, s, p, tol, packed))
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
-    if (L.sp.degenerate || L.sp.outside > tol ||
+    if (L.sp.degenerate || L.sp.outside > acquire ||
         std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)] || behind(pr, s, L))
       continue;
     // About the true distance to the segment: the normal distance and, outside the segment,
