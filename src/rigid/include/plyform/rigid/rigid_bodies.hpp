@@ -108,6 +108,8 @@ class RigidBodies {
     /// The velocities of the half step the last advance computed (t_{n+1/2}); `velocity` and
     /// `omega` are those of t_n.
     std::array<double, 3> velocity_half{}, omega_half{};
+    /// The velocities of the half step before it (t_{n-1/2}).
+    std::array<double, 3> velocity_before{}, omega_before{};
   };
 
   /// Finds the parts with RigidMaterial, their nodes (of their solid and shell elements) and
