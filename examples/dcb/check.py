@@ -41,8 +41,14 @@ def contact_penalty(run):
     return {1: min(slave, master), 2: master, 3: slave}.get(penopt, min(slave, master))
 
 
+def plate_modulus(p):
+    """The arms' bending modulus: the decks hold y (and the rotations about x and z) at every
+    node, so an arm bends in plane strain across its width: E / (1 - nu^2)."""
+    return p["E"] / (1.0 - p.get("nu", 0.0) ** 2)
+
+
 def closed_forms(p):
-    e, b, h, a0 = p["E"], p["width"], p["thickness"], p["a0"]
+    e, b, h, a0 = plate_modulus(p), p["width"], p["thickness"], p["a0"]
     ei = e * b * h ** 3 / 12.0  # one arm
     g_ic = p["sigma_max"] ** 2 / p["cn"]  # omega = sigma_max^2 / C_N
     k = 2.0 * p["cn"] * b  # foundation of one arm: half the interface layer, per length

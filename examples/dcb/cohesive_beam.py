@@ -49,7 +49,9 @@ def peak_load(p, k_pen, h=0.05, steps=60):
     """
     from scipy.linalg import solve_banded
 
-    e, b, th, a0, length = p["E"], p["width"], p["thickness"], p["a0"], p["length"]
+    # Plane strain across the width (the decks hold y at every node): E / (1 - nu^2).
+    e = p["E"] / (1.0 - p.get("nu", 0.0) ** 2)
+    b, th, a0, length = p["width"], p["thickness"], p["a0"], p["length"]
     cn, smax = p["cn"], p["sigma_max"]
     omega = smax ** 2 / cn
     ei = e * b * th ** 3 / 12.0

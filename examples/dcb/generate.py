@@ -19,7 +19,8 @@ deck's default (viscous) hourglass control. --width B: the specimen's width (20 
 the arms' shell formulation (2, Belytschko-Tsay, by default; 16, fully integrated). --length L:
 the arms' length (100 mm; a run stopped early needs only some 10 mm of bonded ligament beyond
 the crack's reach, 1/lambda being 1.6 mm).
-Poisson's ratio 0, so that beam theory holds for any width (see README.md).
+Poisson's ratio 0 by default (--nu NU; the arms bend in plane strain across the width,
+README.md).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).

@@ -4,7 +4,8 @@
 # decks, run them with `plyform run`, and check each against beam theory (check.py; derivation
 # in README.md). 0.25 mm elements along the arms resolve the 2.5 mm cohesive zone:
 #   elform16  fully integrated arms (ELFORM 16), a 4 mm strip one element across (0.25 x 4 mm,
-#             elongated), the whole opening (14 ms), 1 thread: the user's deck of issue 29
+#             elongated), Poisson's ratio 0.3, the whole opening (14 ms), 1 thread: the user's
+#             deck of issue 29
 #   square    Belytschko-Tsay arms with stiffness hourglass control (IHQ 4), a 0.25 mm strip one
 #             element across (square elements), the whole opening, 1 thread
 #   wide      Belytschko-Tsay IHQ 4, the full 20 mm width meshed 5 across (0.25 x 4 mm), 60 mm
@@ -58,7 +59,7 @@ mkdir -p "${outdir}/viscous"
 (one square 1 --dx 0.25 --ny 1 --width 0.25 --length 80 --every 0.5 && viscous) \
   >"${outdir}/square_viscous.log" 2>&1 &
 beside=$!
-one elform16 1 --dx 0.25 --ny 1 --width 4 --elform 16 --length 80 --every 0.5
+one elform16 1 --dx 0.25 --ny 1 --width 4 --elform 16 --length 80 --every 0.5 --nu 0.3
 beside_ok=1
 wait "${beside}" || beside_ok=0
 cat "${outdir}/square_viscous.log"
