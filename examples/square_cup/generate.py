@@ -26,7 +26,8 @@ integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-
 --plain: the deck as a user writes it: every setting the solver leaves to its defaults (no
 *HOURGLASS: the viscous default; the shipped deck sets only the stiffness form, IHQ 4, which
 `plyform check` asks for on one-point shells under a cohesive interface). --backup: PENOPT 3
-and two plain contacts of the core's nodes against the skins (the restart tests' coarse deck).
+and two plain contacts of the core's nodes against the skins (what the decks carried before
+issue 29; for comparison only).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -244,7 +245,7 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
     k = ["*KEYWORD\n", "*TITLE\n", f"plyform square cup ({layers} layer{'s' if layers > 1 else ''},"
          f" {n} elements along the quarter's edge)\n"]
     k += ["*CONTROL_TERMINATION\n", card(end_time or end)]
-    # --backup (the restart tests' coarse deck only, see below): PENOPT 3, every contact's
+    # --backup (for comparison only, see below): PENOPT 3, every contact's
     # penalty from its slave side.
     if BACKUP:
         k += ["*CONTROL_CONTACT\n", card(0.1, 0.0, 0, 0, 3)]
@@ -320,7 +321,7 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         # stiffer side's penalty (docs/contact.md). Nothing else holds the layers. --backup
         # adds what the deck carried before (PENOPT 3 and a plain, frictionless contact of the
         # core's nodes against each skin, the core's penalty scaled by SFS to about the skin's):
-        # the restart tests' deck at n 10 needs it (a defect, named in README.md, issue 29).
+        # no shipped deck needs it (README.md says what the restart tests' n 10 deck needed).
         sfs = 1969.0 / (0.1 * CORE_E / (3 * (1 - 2 * CORE["nu"])) / (BLANK_HALF / n * 2 ** 0.5))
         backup = ((6, "core under the upper skin", 3), (7, "core on the lower skin", 1)) if BACKUP else ()
         for cid, title, master in backup:
