@@ -120,8 +120,6 @@ struct PassRuntime {
   double work = 0.0;
   std::array<double, 3> resultant{}, master_resultant{};
   double dt0 = 0.0;
-  // The effective mass matters: set for every pass, as each caps its penalty.
-  bool need_mass = false;
   // Offset surfaces of shell layers: the master surface is the mid-surface moved by its offset
   // along the nodal normals (continuous from segment to segment), a slave node's surface point
   // its position moved by its offset along its own nodal normal. Nodal normals are the mean of
@@ -195,10 +193,6 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->bonds = bonds;
       pr->guard = cp.guard;
       pr->dt0 = dt0;
-      // The effective mass matters to every pass: damping (VDC), SOFT = 1, a layer interface's
-      // penalty, the cap on any other penalty (kToolPenaltyScale) and the stick spring of
-      // friction (kStickScale).
-      pr->need_mass = true;
       const std::size_t ns = cp.slave_count();
       const std::size_t nseg = cp.segment_count();
       pr->history = law::HistoryStore(ns);
@@ -1219,17 +1213,17 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // surface point (same shape functions as the force distribution).
     double du[3];
     relative_velocity(pr, k, s, L.sp.shape, rs, L.side, fr, packed, rot, du);
+    // The effective mass, which every pass needs: damping (VDC), SOFT = 1, a layer interface's
+    // penalty, the cap on any other penalty (kToolPenaltyScale), friction's stick spring.
     double mm = 0.0;
-    if (pr.need_mass) {
-      for (int j = 0; j < 4; ++j) {
-        const double nj = L.sp.shape[j];
-        if (nj > 0.0)
-          mm += nj * node_mass(mass, rigid, q[j]);
-      }
+    for (int j = 0; j < 4; ++j) {
+      const double nj = L.sp.shape[j];
+      if (nj > 0.0)
+        mm += nj * node_mass(mass, rigid, q[j]);
     }
     pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
     pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
-    const double me = pr.need_mass ? effective_mass(node_mass(mass, rigid, node), mm) : 0.0;
+    const double me = effective_mass(node_mass(mass, rigid, node), mm);
     pr.m_eff[k] = me;
     const double kk = penalty(pr, k, s, me);
     pr.k_normal[k] = kk / cp.slave_area[k];
