@@ -4,7 +4,8 @@
 Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
-                        [--dt2ms DT] [--elform 2|16] [--plain] [--backup] [--name NAME]
+                        [--dt2ms DT] [--elform 2|16] [--plain] [--slave skin|core] [--backup]
+                        [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -27,7 +28,8 @@ integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-
 *HOURGLASS: the viscous default; the shipped deck sets only the stiffness form, IHQ 4, which
 `plyform check` asks for on one-point shells under a cohesive interface). --backup: PENOPT 3
 and two plain contacts of the core's nodes against the skins (what the decks carried before
-issue 29; for comparison only).
+issue 29; for comparison only). --slave core: the core is the slave side of both cohesive
+contacts (the skins are by default).
 
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs). Units: mm, t, s, MPa,
 N, mJ (N mm).
@@ -307,9 +309,11 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         k += ["*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
         k += [card(slave, master, 3, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC), card(1.0, 1.0)]
     if layers == 3:
-        for cid, title, slave in ((4, "upper skin on the core", 3), (5, "lower skin on the core", 1)):
+        for cid, title, skin in ((4, "upper skin on the core", 3), (5, "lower skin on the core", 1)):
+            # --slave core: the core is the slave side of both (a user's other choice).
+            slave, master = (2, skin) if SLAVE == "core" else (skin, 2)
             k += ["*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
-            k += [card(slave, 2, 3, 3), card(0.0), card(1.0, 1.0)]
+            k += [card(slave, master, 3, 3), card(0.0), card(1.0, 1.0)]
             #     MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC MU_LO
             #     MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
             uc = [1, CN, SMAX, SMAX, 0.0, 0.0, ETA, ZETA, ZETA, 1.0, 1.0e-3, 0, MU, MU, 0.0, 0.0,
@@ -366,6 +370,8 @@ ELFORM = 2
 # --plain: no setting beyond the defaults (see the module's docstring).
 PLAIN = False
 BACKUP = False
+# Which side of the cohesive contacts is the slave: "skin" (each skin against the core) or "core".
+SLAVE = "skin"
 
 
 def main(argv):
@@ -397,6 +403,8 @@ def main(argv):
             globals()["ELFORM"] = int(args.pop(0))
         elif a == "--plain":
             globals()["PLAIN"] = True
+        elif a == "--slave":
+            globals()["SLAVE"] = args.pop(0)
         elif a == "--backup":
             globals()["BACKUP"] = True
         elif a == "--name":
@@ -407,6 +415,8 @@ def main(argv):
             outdir = a
     if layers not in (1, 3):
         sys.exit("generate.py: --layers is 1 or 3")
+    if SLAVE not in ("skin", "core"):
+        sys.exit("generate.py: --slave is skin or core")
     if ELFORM not in (2, 16):
         sys.exit("generate.py: --elform is 2 or 16")
     name = name or f"square_cup_{layers}"
