@@ -289,6 +289,12 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
   }
   fmt::print(out, "constraints: {} fixed nodes/dofs, {} prescribed motions, {} nodal loads\n",
              m.fixed.size(), m.motions.size(), m.loads.size());
+  if (!m.pressure_loads.empty()) {
+    fmt::print(out,
+               "pressure loads: {} on {} segments (each on its current area, against its "
+               "normal N1 -> N2 -> N3)\n",
+               m.pressure_loads.size(), m.pressure_segments.size());
+  }
   // What the build made of each contact: the sides as slave nodes and master segments, with
   // their offsets and SOFT = 0 penalty (docs/contact.md).
   for (const core::ContactInterface& c : m.contacts) {

@@ -53,15 +53,94 @@ BoundaryConditions::BoundaryConditions(const core::Model& model)
       constrained_nodes_.push_back(static_cast<core::Index>(i));
     }
   }
+  std::vector<unsigned char> pressed(model.node_count(), 0);
+  for (const std::array<core::Index, 4>& seg : model.pressure_segments) {
+    for (core::Index i : seg)
+      pressed[static_cast<std::size_t>(i)] = 1;
+  }
+  for (std::size_t i = 0; i < pressed.size(); ++i) {
+    if (pressed[i])
+      pressure_nodes_.push_back(static_cast<core::Index>(i));
+  }
 }
 
 void BoundaryConditions::loads(double t, NodalState& s) const {
   // External forces are non-zero only at loaded nodes: reset those, then add every load.
   for (const core::NodalLoad& l : model_.loads)
     component(s.ex, s.ey, s.ez, l.direction)[l.node] = 0.0;
+  for (core::Index i : pressure_nodes_)
+    s.ex[i] = s.ey[i] = s.ez[i] = 0.0;
   for (const core::NodalLoad& l : model_.loads) {
     const double f = l.scale * model_.curves[static_cast<std::size_t>(l.curve)](t);
     component(s.ex, s.ey, s.ez, l.direction)[l.node] += f;
+  }
+  for (const core::PressureLoad& load : model_.pressure_loads) {
+    if (t < load.arrival)
+      continue;
+    const double p = load.scale * model_.curves[static_cast<std::size_t>(load.curve)](t);
+    if (p == 0.0)
+      continue;
+    for (std::size_t k = load.first; k < load.first + load.count; ++k)
+      press_segment(model_.pressure_segments[k], p, s);
+  }
+}
+
+// The nodal forces of pressure p on one segment at its current position: f_a = -p times the
+// integral of N_a (x,xi x x,eta) over the bilinear surface. With x = a0 + a1 xi + a2 eta +
+// a3 xi eta, the area vector x,xi x x,eta = c0 + xi c1 + eta c2 is linear (c0 = a1 x a2,
+// c1 = a1 x a3, c2 = a3 x a2: a3 x a3 vanishes), so the integral is exact in closed form,
+// f_a = -p (c0 + (xi_a c1 + eta_a c2) / 3): on a warped segment too, the forces' power is
+// -p times the rate of the volume the surface sweeps (the external work is p dV). They sum
+// to -p times the segment's area vector. A triangle: -p A / 3 on each corner.
+void BoundaryConditions::press_segment(const std::array<core::Index, 4>& seg, double p,
+                                       NodalState& s) const {
+  double x[4][3];
+  for (int a = 0; a < 4; ++a) {
+    const auto i = static_cast<std::size_t>(seg[static_cast<std::size_t>(a)]);
+    x[a][0] = model_.x0[i] + s.ux[i];
+    x[a][1] = model_.y0[i] + s.uy[i];
+    x[a][2] = model_.z0[i] + s.uz[i];
+  }
+  const auto cross = [](const double* u, const double* v, double* w) {
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+  };
+  double f[4][3];
+  int corners = 4;
+  if (seg[2] == seg[3]) {
+    corners = 3;
+    double e1[3], e2[3], area[3];
+    for (int d = 0; d < 3; ++d) {
+      e1[d] = x[1][d] - x[0][d];
+      e2[d] = x[2][d] - x[0][d];
+    }
+    cross(e1, e2, area);  // twice the area vector
+    for (int a = 0; a < 3; ++a)
+      for (int d = 0; d < 3; ++d)
+        f[a][d] = -p * area[d] / 6.0;
+  } else {
+    double a1[3], a2[3], a3[3];
+    for (int d = 0; d < 3; ++d) {
+      a1[d] = 0.25 * (-x[0][d] + x[1][d] + x[2][d] - x[3][d]);
+      a2[d] = 0.25 * (-x[0][d] - x[1][d] + x[2][d] + x[3][d]);
+      a3[d] = 0.25 * (x[0][d] - x[1][d] + x[2][d] - x[3][d]);
+    }
+    double c0[3], c1[3], c2[3];
+    cross(a1, a2, c0);
+    cross(a1, a3, c1);
+    cross(a3, a2, c2);
+    constexpr double xi[4] = {-1.0, 1.0, 1.0, -1.0};
+    constexpr double eta[4] = {-1.0, -1.0, 1.0, 1.0};
+    for (int a = 0; a < 4; ++a)
+      for (int d = 0; d < 3; ++d)
+        f[a][d] = -p * (c0[d] + (xi[a] * c1[d] + eta[a] * c2[d]) / 3.0);
+  }
+  for (int a = 0; a < corners; ++a) {
+    const auto i = static_cast<std::size_t>(seg[static_cast<std::size_t>(a)]);
+    s.ex[i] += f[a][0];
+    s.ey[i] += f[a][1];
+    s.ez[i] += f[a][2];
   }
 }
 

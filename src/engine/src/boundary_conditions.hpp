@@ -1,5 +1,6 @@
 #pragma once
-// Constraints and prescribed motions applied to the half-step velocities, and nodal loads.
+// Constraints and prescribed motions applied to the half-step velocities, nodal loads and
+// pressure loads.
 
 #include <array>
 #include <vector>
@@ -14,7 +15,8 @@ class BoundaryConditions {
   explicit BoundaryConditions(const core::Model& model);
 
   /// External nodal forces at time t into s.ex, s.ey, s.ez (only loaded entries are touched:
-  /// the others stay 0).
+  /// the others stay 0): the nodal loads, and the pressure loads on the segments at their
+  /// positions x0 + u (the displacement at t).
   void loads(double t, NodalState& s) const;
 
   /// The step whose velocities are constrained: [t, t + dt], after the step [t - dt_prev, t]
@@ -41,9 +43,14 @@ class BoundaryConditions {
   }
 
  private:
+  /// Adds the nodal forces of pressure p on one segment (N4 = N3: a triangle) to s.ex, s.ey,
+  /// s.ez.
+  void press_segment(const std::array<core::Index, 4>& seg, double p, NodalState& s) const;
+
   const core::Model& model_;
   std::vector<unsigned char> constrained_;  ///< 3 per node
   std::vector<core::Index> constrained_nodes_;
+  std::vector<core::Index> pressure_nodes_;  ///< the corners of the pressure segments, once
 };
 
 }  // namespace plyform::engine

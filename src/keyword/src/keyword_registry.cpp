@@ -58,6 +58,10 @@ KeywordSpec set_node_generate_keyword();
 KeywordSpec set_node_list_generate_keyword();
 KeywordSpec set_part_generate_keyword();
 KeywordSpec set_part_list_generate_keyword();
+KeywordSpec set_shell_list_keyword();
+KeywordSpec set_shell_keyword();
+KeywordSpec set_shell_generate_keyword();
+KeywordSpec set_shell_list_generate_keyword();
 KeywordSpec contact_one_way_surface_to_surface_keyword();
 KeywordSpec contact_surface_to_surface_keyword();
 KeywordSpec contact_forming_one_way_surface_to_surface_keyword();
@@ -81,6 +85,10 @@ KeywordSpec initial_temperature_set_keyword();
 KeywordSpec load_node_point_keyword();
 KeywordSpec load_node_set_keyword();
 KeywordSpec load_rigid_body_keyword();
+KeywordSpec load_segment_keyword();
+KeywordSpec load_segment_set_keyword();
+KeywordSpec load_shell_element_keyword();
+KeywordSpec load_shell_set_keyword();
 KeywordSpec control_termination_keyword();
 KeywordSpec control_timestep_keyword();
 KeywordSpec control_energy_keyword();
@@ -169,6 +177,10 @@ std::span<const KeywordSpec> keyword_registry() {
       set_node_list_generate_keyword(),
       set_part_generate_keyword(),
       set_part_list_generate_keyword(),
+      set_shell_list_keyword(),
+      set_shell_keyword(),
+      set_shell_generate_keyword(),
+      set_shell_list_generate_keyword(),
       contact_one_way_surface_to_surface_keyword(),
       contact_surface_to_surface_keyword(),
       contact_forming_one_way_surface_to_surface_keyword(),
@@ -192,6 +204,10 @@ std::span<const KeywordSpec> keyword_registry() {
       load_node_point_keyword(),
       load_node_set_keyword(),
       load_rigid_body_keyword(),
+      load_segment_keyword(),
+      load_segment_set_keyword(),
+      load_shell_element_keyword(),
+      load_shell_set_keyword(),
       control_termination_keyword(),
       control_timestep_keyword(),
       control_energy_keyword(),

@@ -376,6 +376,50 @@ struct Builder {
         m.loads.push_back(core::NodalLoad{n, l.dof - 1, curve.at(l.curve_id), l.scale});
       }
     }
+    pressure_loads();
+  }
+
+  // Each pressure load's segments, in the order of its set, as local node indices.
+  void pressure_loads() {
+    if (d.pressure_loads.empty())
+      return;
+    std::unordered_map<int, const model::SetSegmentDesc*> segment_sets;
+    for (const model::SetSegmentDesc& s : d.segment_sets)
+      segment_sets.emplace(s.id, &s);
+    std::unordered_map<int, const model::SetListDesc*> shell_sets;
+    for (const model::SetListDesc& s : d.shell_sets)
+      shell_sets.emplace(s.id, &s);
+    std::unordered_map<int, const model::ElementShellDesc*> shells;
+    for (const model::ElementShellDesc& e : d.shells)
+      shells.emplace(e.id, &e);
+    const auto add = [&](const std::array<int, 4>& ids) {
+      m.pressure_segments.push_back({node.at(ids[0]), node.at(ids[1]), node.at(ids[2]),
+                                     node.at(ids[3] == 0 ? ids[2] : ids[3])});
+    };
+    for (const model::LoadPressureDesc& l : d.pressure_loads) {
+      core::PressureLoad p{.curve = curve.at(l.curve_id),
+                           .scale = l.scale,
+                           .arrival = l.arrival,
+                           .first = m.pressure_segments.size()};
+      switch (l.target) {
+        case model::PressureTarget::kSegment:
+          add(l.nodes);
+          break;
+        case model::PressureTarget::kSegmentSet:
+          for (const std::array<int, 4>& seg : segment_sets.at(l.target_id)->segments)
+            add(seg);
+          break;
+        case model::PressureTarget::kShell:
+          add(shells.at(l.target_id)->nodes);
+          break;
+        case model::PressureTarget::kShellSet:
+          for (int eid : shell_sets.at(l.target_id)->ids)
+            add(shells.at(eid)->nodes);
+          break;
+      }
+      p.count = m.pressure_segments.size() - p.first;
+      m.pressure_loads.push_back(p);
+    }
   }
 
   void rigid_bodies() {

@@ -6,6 +6,7 @@
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/validate_contact.hpp"
 #include "plyform/setup/validate_mesh.hpp"
+#include "validate_pressure_loads.hpp"
 #include "validate_woven_ply.hpp"
 
 namespace plyform::setup {
@@ -61,6 +62,9 @@ std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
     errors.push_back(std::move(d));
   }
   for (keyword::Diagnostic& d : validate_woven_plies(model)) {
+    errors.push_back(std::move(d));
+  }
+  for (keyword::Diagnostic& d : validate_pressure_loads(model)) {
     errors.push_back(std::move(d));
   }
 

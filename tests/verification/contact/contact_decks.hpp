@@ -127,7 +127,11 @@ inline void run_deck(const std::string& text, DeckRun& out, int threads = 1) {
   auto built = setup::build(read.model);
   ASSERT_TRUE(built.errors.empty()) << built.errors.front().to_string();
   const core::Model& m = *built.model;
+  // A test's own nodout probe (set before the call) runs after the recording.
+  std::function<void(const engine::Snapshot&)> probe = std::move(out.sink.on_nodout);
   out.sink.on_nodout = [&](const engine::Snapshot& s) {
+    if (probe)
+      probe(s);
     if (s.contact != nullptr) {
       out.cohesive.emplace_back(s.time, std::vector<contact::SlaveNodeResult>{});
       s.contact->cohesive_results(out.cohesive.back().second);

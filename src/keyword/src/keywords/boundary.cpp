@@ -205,31 +205,6 @@ constexpr bool turns_about_offset_axis(int dof) {
   return dof == 9 || dof == 10 || dof == 11;
 }
 
-/// Reads the optional ID card of _ID; returns the data line that follows, or nothing when the
-/// block is done.
-struct IdAndLine {
-  int id = 0;
-  std::string heading;
-  std::optional<DataLine> line;
-};
-
-IdAndLine next_item(KeywordInput& in, std::span<const CardSpec> cards) {
-  IdAndLine item;
-  const auto first = in.next_nonblank_line();
-  if (!first || in.option() != "ID") {
-    item.line = first;
-    return item;
-  }
-  const CardValues id = in.read(cards[0], *first);
-  item.id = id.integer("ID");
-  item.heading = id.text("HEADING");
-  item.line = in.next_line();
-  if (!item.line) {
-    in.fail(first->line, "", "missing card 1 after the ID card");
-  }
-  return item;
-}
-
 void read_spc(KeywordInput& in, model::NodeTarget target, std::span<const CardSpec> cards) {
   const std::string target_name = target == model::NodeTarget::kNode ? "NID" : "NSID";
   for (IdAndLine item = next_item(in, cards); item.line; item = next_item(in, cards)) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -65,6 +66,31 @@ void store_once(KeywordInput& in, std::optional<Desc>& slot, Desc desc) {
 /// A written 0 (or a blank) stands for LS-DYNA's default in the fields that use it so.
 inline double zero_means(double value, double fallback) {
   return value == 0.0 ? fallback : value;
+}
+
+/// Reads the optional ID card of _ID (cards[0]) before each item; returns the data line that
+/// follows, or nothing when the block is done.
+struct IdAndLine {
+  int id = 0;
+  std::string heading;
+  std::optional<DataLine> line;
+};
+
+inline IdAndLine next_item(KeywordInput& in, std::span<const CardSpec> cards) {
+  IdAndLine item;
+  const auto first = in.next_nonblank_line();
+  if (!first || in.option() != "ID") {
+    item.line = first;
+    return item;
+  }
+  const CardValues id = in.read(cards[0], *first);
+  item.id = id.integer("ID");
+  item.heading = id.text("HEADING");
+  item.line = in.next_line();
+  if (!item.line) {
+    in.fail(first->line, "", "missing card 1 after the ID card");
+  }
+  return item;
 }
 
 /// True when a data line that is not blank is left in the block.

@@ -1,5 +1,5 @@
-// *SET_NODE_LIST(_TITLE), *SET_PART_LIST(_TITLE), their _GENERATE forms and
-// *SET_SEGMENT(_TITLE).
+// *SET_NODE_LIST(_TITLE), *SET_PART_LIST(_TITLE), *SET_SHELL_LIST(_TITLE), their _GENERATE
+// forms and *SET_SEGMENT(_TITLE).
 #include "set_list.hpp"
 
 #include <algorithm>
@@ -39,6 +39,7 @@ constexpr FieldSpec id_field(std::string_view name, std::string_view description
 }
 constexpr std::string_view kNodeIdText = "node id (blank or 0: none)";
 constexpr std::string_view kPartIdText = "part id (blank or 0: none)";
+constexpr std::string_view kShellIdText = "shell element id (blank or 0: none)";
 constexpr std::array kNodeIdFields{
     id_field("NID", kNodeIdText), id_field("NID", kNodeIdText), id_field("NID", kNodeIdText),
     id_field("NID", kNodeIdText), id_field("NID", kNodeIdText), id_field("NID", kNodeIdText),
@@ -48,6 +49,12 @@ constexpr std::array kPartIdFields{
     id_field("PID", kPartIdText), id_field("PID", kPartIdText), id_field("PID", kPartIdText),
     id_field("PID", kPartIdText), id_field("PID", kPartIdText), id_field("PID", kPartIdText),
     id_field("PID", kPartIdText), id_field("PID", kPartIdText),
+};
+
+constexpr std::array kShellIdFields{
+    id_field("EID", kShellIdText), id_field("EID", kShellIdText), id_field("EID", kShellIdText),
+    id_field("EID", kShellIdText), id_field("EID", kShellIdText), id_field("EID", kShellIdText),
+    id_field("EID", kShellIdText), id_field("EID", kShellIdText),
 };
 
 constexpr std::array kNodeCards{
@@ -64,6 +71,15 @@ constexpr std::array kPartCards{
     CardSpec{.title = "Part cards",
              .fields = kPartIdFields,
              .presence = "eight part ids per card, until the next keyword",
+             .numbering = FieldNumbering::kSequential},
+};
+
+constexpr std::array kShellCards{
+    CardSpec{.title = "Title card", .fields = kTitleCardFields, .presence = "with _TITLE only"},
+    CardSpec{.title = "Card 1", .fields = kCard1Fields, .presence = "required"},
+    CardSpec{.title = "Element cards",
+             .fields = kShellIdFields,
+             .presence = "eight shell element ids per card, until the next keyword",
              .numbering = FieldNumbering::kSequential},
 };
 
@@ -114,6 +130,7 @@ constexpr std::array kNodeGenerateCards{
     CardSpec{.title = "Range cards", .fields = kRangeFields, .presence = kRangePresence},
 };
 constexpr std::array kPartGenerateCards = kNodeGenerateCards;
+constexpr std::array kShellGenerateCards = kNodeGenerateCards;
 
 /// The title card of _TITLE and card 1 (SID DA1..DA4 SOLVER; MECH only) of every set.
 model::SetListDesc read_set_header(KeywordInput& in, std::span<const CardSpec> cards) {
@@ -202,6 +219,10 @@ void read_set_part_list(KeywordInput& in) {
   in.model().part_sets.push_back(read_set(in, kPartCards));
 }
 
+void read_set_shell_list(KeywordInput& in) {
+  in.model().shell_sets.push_back(read_set(in, kShellCards));
+}
+
 void read_set_segment(KeywordInput& in) {
   const model::SetListDesc header = read_set_header(in, kSegmentCards);
   model::SetSegmentDesc set;
@@ -224,6 +245,10 @@ void read_set_node_generate(KeywordInput& in) {
 
 void read_set_part_generate(KeywordInput& in) {
   in.model().part_sets.push_back(read_generated_set(in, kPartGenerateCards));
+}
+
+void read_set_shell_generate(KeywordInput& in) {
+  in.model().shell_sets.push_back(read_generated_set(in, kShellGenerateCards));
 }
 
 /// The ids of `sets`' ranges that `defined` (sorted) holds, in range order, each once; a set
@@ -272,6 +297,8 @@ void expand_generated_sets(model::ModelDesc& model, std::vector<Diagnostic>& err
     expand(model.node_sets, sorted_ids(model.nodes), "node", errors);
   if (needs(model.part_sets))
     expand(model.part_sets, sorted_ids(model.parts), "part", errors);
+  if (needs(model.shell_sets))
+    expand(model.shell_sets, sorted_ids(model.shells), "shell element", errors);
 }
 
 KeywordSpec set_node_list_keyword() {
@@ -303,6 +330,23 @@ KeywordSpec set_part_keyword() {
   KeywordSpec spec = set_part_list_keyword();
   spec.name = "SET_PART";
   spec.summary = "The same keyword as *SET_PART_LIST (LS-DYNA's short form).";
+  return spec;
+}
+
+KeywordSpec set_shell_list_keyword() {
+  return {.name = "SET_SHELL_LIST",
+          .options = kNoneOrTitle,
+          .handler = read_set_shell_list,
+          .cards = kShellCards,
+          .summary =
+              "A set of shell elements listed by id (zeros and blanks are skipped), for "
+              "*LOAD_SHELL_SET."};
+}
+
+KeywordSpec set_shell_keyword() {
+  KeywordSpec spec = set_shell_list_keyword();
+  spec.name = "SET_SHELL";
+  spec.summary = "The same keyword as *SET_SHELL_LIST (LS-DYNA's short form).";
   return spec;
 }
 
@@ -352,6 +396,25 @@ KeywordSpec set_part_list_generate_keyword() {
   KeywordSpec spec = set_part_generate_keyword();
   spec.name = "SET_PART_LIST_GENERATE";
   spec.summary = "The same keyword as *SET_PART_GENERATE (the spelling LS-PrePost writes).";
+  return spec;
+}
+
+}  // namespace plyform::keyword
+
+namespace plyform::keyword {
+
+KeywordSpec set_shell_generate_keyword() {
+  return {.name = "SET_SHELL_GENERATE",
+          .options = kNoneOrTitle,
+          .handler = read_set_shell_generate,
+          .cards = kShellGenerateCards,
+          .summary = "A set of the shell elements whose ids lie in ranges, as *SET_NODE_GENERATE."};
+}
+
+KeywordSpec set_shell_list_generate_keyword() {
+  KeywordSpec spec = set_shell_generate_keyword();
+  spec.name = "SET_SHELL_LIST_GENERATE";
+  spec.summary = "The same keyword as *SET_SHELL_GENERATE (the spelling LS-PrePost writes).";
   return spec;
 }
 

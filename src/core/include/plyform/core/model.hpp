@@ -139,6 +139,17 @@ struct NodalLoad {
   double scale = 1.0;
 };
 
+/// *LOAD_SEGMENT(_SET), *LOAD_SHELL_ELEMENT/_SET: a pressure of a curve on segments, on their
+/// current area and against their current normal (N1 -> N2 -> N3, right-handed): a follower
+/// load, zero before its arrival time.
+struct PressureLoad {
+  Index curve = 0;
+  double scale = 1.0;
+  double arrival = 0.0;
+  std::size_t first = 0;  ///< its segments: Model::pressure_segments[first, first + count)
+  std::size_t count = 0;
+};
+
 /// *BOUNDARY_PRESCRIBED_MOTION_RIGID: a rigid part's translation (dof 0-2) or rotation about a
 /// global axis through its centre of mass (dof 3-5).
 struct RigidMotion {
@@ -219,6 +230,9 @@ struct Model {
   std::vector<FixedDofs> fixed;
   std::vector<PrescribedMotion> motions;
   std::vector<NodalLoad> loads;
+  std::vector<PressureLoad> pressure_loads;
+  /// The pressure loads' segments: local node indices N1..N4 (N4 = N3 for a triangle).
+  std::vector<std::array<Index, 4>> pressure_segments;
   std::vector<RigidMotion> rigid_motions;
   std::vector<RigidLoad> rigid_loads;
   std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)

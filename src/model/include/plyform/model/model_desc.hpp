@@ -17,6 +17,7 @@
 #include "plyform/model/hourglass_desc.hpp"
 #include "plyform/model/initial_velocity_desc.hpp"
 #include "plyform/model/load_node_desc.hpp"
+#include "plyform/model/load_pressure_desc.hpp"
 #include "plyform/model/load_rigid_body_desc.hpp"
 #include "plyform/model/mat_elastic_desc.hpp"
 #include "plyform/model/mat_mooney_rivlin_desc.hpp"
@@ -70,6 +71,7 @@ struct ModelDesc {
   std::vector<SetListDesc> node_sets;
   std::vector<SetListDesc> part_sets;
   std::vector<SetSegmentDesc> segment_sets;
+  std::vector<SetListDesc> shell_sets;  ///< *SET_SHELL(_LIST): shell element ids
   /// *DEFINE_COORDINATE_SYSTEM and *DEFINE_COORDINATE_VECTOR (one id range).
   std::vector<CoordinateSystemDesc> coordinate_systems;
 
@@ -82,6 +84,7 @@ struct ModelDesc {
   std::vector<PrescribedMotionDesc> prescribed_motions;
   std::vector<PrescribedMotionRigidDesc> rigid_motions;
   std::vector<LoadNodeDesc> nodal_loads;
+  std::vector<LoadPressureDesc> pressure_loads;  ///< *LOAD_SEGMENT(_SET), *LOAD_SHELL_*
   std::vector<LoadRigidBodyDesc> rigid_body_loads;
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
   std::vector<InitialVelocityNodeDesc> initial_node_velocities;
