@@ -170,7 +170,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         std::fill_n(&b.frame_turn[at0], unip, FTURN[k_el]);
       }
     }
-    update_points<Law>(mat, st, unip * c0, unip * chunk, b, thermal, plastic_heat, expands);
+    update_points<Law>(mat, st, unip * c0, unip * chunk, b, thermal, plastic_heat, expands, dt);
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
       const core::Index* conn = &block.connectivity[4 * e];

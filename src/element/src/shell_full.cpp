@@ -211,7 +211,7 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         set_material_axes<Law>(mat, block, e, f, k_el, b, at_el, ppe);
       }
     }
-    update_points<Law>(mat, st, ppe * c0, ppe * chunk, b, thermal, plastic_heat, expands);
+    update_points<Law>(mat, st, ppe * c0, ppe * chunk, b, thermal, plastic_heat, expands, dt);
     for (std::size_t e = c0; e < c0 + chunk; ++e) {
       const std::size_t k_el = e - c0;
       const core::Index* conn = &block.connectivity[4 * e];

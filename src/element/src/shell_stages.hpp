@@ -224,7 +224,8 @@ inline void set_material_axes(const M& mat, const core::ShellBlock& block, std::
 // forces do that work) and to the thickness strain (free expansion).
 template <class Law, class M, std::size_t P>
 inline void update_points(const M& mat, ShellBlockState& st, std::size_t q0, std::size_t n,
-                          PointBuffers<P>& b, bool thermal, bool plastic_heat, bool expands) {
+                          PointBuffers<P>& b, bool thermal, bool plastic_heat, bool expands,
+                          double dt) {
   constexpr std::size_t per_point = Law::history.size();
   material::ShellPoints pts{b.dxx,        b.dyy,        b.dxy,         b.dyz,
                             b.dzx,        &st.s[0][q0], &st.s[1][q0],  &st.s[2][q0],
@@ -233,6 +234,7 @@ inline void update_points(const M& mat, ShellBlockState& st, std::size_t q0, std
     pts.cos_t = b.cos_t;
     pts.sin_t = b.sin_t;
   }
+  pts.dt = dt;
   if constexpr (per_point > 0)
     pts.history = &st.history[per_point * q0];
   if (thermal)

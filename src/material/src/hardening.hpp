@@ -19,6 +19,15 @@ struct LinearHardening {
   [[nodiscard]] double slope(double /*e*/) const { return hp; }
 };
 
+/// A hardening law scaled by a factor k (a point's Cowper-Symonds factor).
+template <class H>
+struct ScaledHardening {
+  H h;
+  double k;
+  [[nodiscard]] double value(double e) const { return k * h.value(e); }
+  [[nodiscard]] double slope(double e) const { return k * h.slope(e); }
+};
+
 /// Piecewise linear (x_i, y_i), i < n, extrapolated with the end slopes; n = 1 is constant.
 struct TabulatedHardening {
   const double* x;

@@ -4,13 +4,12 @@
 #include <cmath>
 
 #include "hardening.hpp"
+#include "plyform/material/strain_rate.hpp"
 
 namespace plyform::material {
 
 double cowper_symonds_factor(const core::PlasticKinematic& m, double rate) {
-  if (m.src <= 0.0 || m.srp <= 0.0 || !(rate > 0.0))
-    return 1.0;
-  return 1.0 + std::pow(rate / m.src, 1.0 / m.srp);
+  return CowperSymonds{m.src, m.srp}.factor(rate);
 }
 
 namespace {
@@ -74,12 +73,7 @@ void solid_update(const core::PlasticKinematic& m, std::size_t n, ConstSymView d
                          sigma.yz[p] - a[4],        sigma.zx[p] - a[5]};
     const double q_tr = std::sqrt(1.5 * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2] +
                                          2.0 * (x[3] * x[3] + x[4] * x[4] + x[5] * x[5])));
-    double k = 1.0;
-    if (rate) {
-      const double dd = d.xx[p] * d.xx[p] + d.yy[p] * d.yy[p] + d.zz[p] * d.zz[p] +
-                        2.0 * (d.xy[p] * d.xy[p] + d.yz[p] * d.yz[p] + d.zx[p] * d.zx[p]);
-      k = cowper_symonds_factor(m, std::sqrt(dd));
-    }
+    const double k = rate ? cowper_symonds_factor(m, solid_strain_rate(d, p)) : 1.0;
     const double radius = k * (m.sigy + h_iso * eps_p[p]);
     if (!(q_tr > radius))
       continue;
@@ -158,14 +152,7 @@ void shell_update(const core::PlasticKinematic& m, std::size_t n, const ShellPoi
     }
     const double ex = pts.sxx[p] - ab[0], ey = pts.syy[p] - ab[1], et = pts.sxy[p] - ab[3];
     const double psi2 = ex * ex + ey * ey - ex * ey + 3.0 * et * et;
-    double k = 1.0;
-    if (rate) {
-      const double dxx = pts.dxx[p], dyy = pts.dyy[p], dzz = -(dxx + dyy);
-      const double dd =
-          dxx * dxx + dyy * dyy + dzz * dzz +
-          2.0 * (pts.dxy[p] * pts.dxy[p] + pts.dyz[p] * pts.dyz[p] + pts.dzx[p] * pts.dzx[p]);
-      k = cowper_symonds_factor(m, std::sqrt(dd) / dt);
-    }
+    const double k = rate ? cowper_symonds_factor(m, shell_strain_rate(pts, p, dt)) : 1.0;
     const detail::LinearHardening h{k * m.sigy, k * h_iso};
     const double sy_n = h.value(pts.eps_p[p]);
     if (!(psi2 > sy_n * sy_n))

@@ -8,6 +8,7 @@
 
 #include "hardening.hpp"
 #include "plane_stress_batch.hpp"
+#include "plyform/material/strain_rate.hpp"
 #include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material {
@@ -55,9 +56,10 @@ void plane_stress_elastic(double young, double nu, std::size_t n, const ShellPoi
 // plane_stress_return). The return changes p by p - p_tr, so the elastic thickness strain of
 // the trial is corrected by -(nu/E)(p - p_tr), and the plastic part is
 // d eps^p_zz = -(d eps^p_xx + d eps^p_yy) = -gamma p / 2.
-template <class H>
-void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t n,
-                                double* __restrict sxx, double* __restrict syy,
+// `scale(p)`: point p's factor on the yield curve (its Cowper-Symonds factor, or 1).
+template <class H, class Scale>
+void plane_stress_return_kernel(const H& h0, const Scale& scale, double young, double nu,
+                                std::size_t n, double* __restrict sxx, double* __restrict syy,
                                 double* __restrict sxy, double* __restrict eps_p,
                                 double* __restrict dzz) {
   if constexpr (std::is_same_v<H, detail::LinearHardening>) {
@@ -66,6 +68,8 @@ void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t
     for (std::size_t p = 0; p < n; ++p) {
       const double x = sxx[p], y = syy[p], t = sxy[p];
       const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+      const double k = scale(p);
+      const detail::LinearHardening h{k * h0.sigy, k * h0.hp};
       const double sy_n = h.value(eps_p[p]);
       if (psi2 > sy_n * sy_n)
         batch.add(p, young, nu, h.sigy, h.hp, x + y, x - y, t, std::sqrt(psi2));
@@ -78,6 +82,7 @@ void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t
   for (std::size_t p = 0; p < n; ++p) {
     const double x = sxx[p], y = syy[p], t = sxy[p];
     const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
+    const detail::ScaledHardening<H> h{h0, scale(p)};
     const double sy_n = h.value(eps_p[p]);
     if (!(psi2 > sy_n * sy_n))
       continue;
@@ -96,11 +101,24 @@ void plane_stress_return_kernel(const H& h, double young, double nu, std::size_t
   }
 }
 
+// The yield curve as it is (no rate effect): a factor of exactly 1 (x * 1.0 is x, so the
+// unscaled laws' results are unchanged to the bit).
+constexpr auto kUnscaled = [](std::size_t) { return 1.0; };
+
 template <class Law>
 void shell_j2(const Law& m, std::size_t n, const ShellPoints& s) {
+  // The rates read the increments, which the trial leaves as they are (it overwrites dzz,
+  // which the rate does not read).
+  const CowperSymonds rate{m.rate_c, m.rate_p};
   plane_stress_elastic(m.young, m.poisson, n, s);
   detail::with_hardening(m, [&](const auto& h) {
-    plane_stress_return_kernel(h, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p, s.dzz);
+    if (rate.on() && s.dt > 0.0) {
+      const auto k = [&](std::size_t p) { return rate.factor(shell_strain_rate(s, p, s.dt)); };
+      plane_stress_return_kernel(h, k, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p, s.dzz);
+    } else {
+      plane_stress_return_kernel(h, kUnscaled, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p,
+                                 s.dzz);
+    }
   });
 }
 

@@ -212,16 +212,6 @@ struct Builder {
                     "*MAT_RIGID)");
           continue;
         }
-        // The shell element passes the laws its strain increments, not its step: the strain
-        // rate of the Cowper-Symonds factor is not known in a shell yet.
-        if (const auto* pk = std::get_if<core::PlasticKinematic>(&law);
-            pk != nullptr && pk->src > 0.0 && pk->srp > 0.0) {
-          error(p.where, "*PART", "MID",
-                "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
-                    " (*MAT_PLASTIC_KINEMATIC) has strain rate effects (SRC, SRP) on shells, "
-                    "which are not supported yet (they are on solids); set SRC and SRP to 0");
-          continue;
-        }
         if (sec.nip < 1 || sec.nip > 5) {
           error(sec.where, "*SECTION_SHELL", "NIP",
                 "NIP " + std::to_string(sec.nip) + " is not supported: use 1 to 5");

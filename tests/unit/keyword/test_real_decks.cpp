@@ -1,5 +1,6 @@
 // The third-party decks of ../shared/decks/real (when present): the reader must return on each,
 // quickly, with every error located. Most report unsupported keywords for now.
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -50,7 +51,7 @@ const model::CurveDesc* find_curve(const ReadResult& result, int id) {
 }
 
 /// Decks of MANIFEST.tsv that read with no error (the solver-core keyword subset).
-constexpr int kAcceptedRealDecks = 7;
+constexpr int kAcceptedRealDecks = 8;
 
 class RealDecks : public ::testing::Test {
  protected:
@@ -98,6 +99,20 @@ TEST_F(RealDecks, CountsTheFullyAcceptedDecks) {
   }
   std::printf("real decks fully accepted by the reader: %d of %zu\n", accepted, decks.size());
   EXPECT_GE(accepted, kAcceptedRealDecks);
+}
+
+TEST_F(RealDecks, OneElementLoadControlReadsItsSegmentPressure) {
+  // k1zr's one-element deck loads its top face by *LOAD_SEGMENT (fixed format, trailing
+  // blanks on the keyword line): the curve, its scale and the four nodes as written.
+  const ReadResult result = read_deck(real_decks_folder() / "k1zr/one-element-loadcontrol.k");
+  ASSERT_TRUE(result.ok()) << result.errors.front().to_string();
+  ASSERT_EQ(result.model.pressure_loads.size(), 1u);
+  const model::LoadPressureDesc& p = result.model.pressure_loads[0];
+  EXPECT_EQ(p.target, model::PressureTarget::kSegment);
+  EXPECT_EQ(p.curve_id, 1);
+  EXPECT_DOUBLE_EQ(p.scale, 1.0);
+  EXPECT_DOUBLE_EQ(p.arrival, 0.0);
+  EXPECT_EQ(p.nodes, (std::array<int, 4>{5, 6, 7, 8}));
 }
 
 TEST_F(RealDecks, ParametersExpressionsAndLongCurveThroughIncludes) {

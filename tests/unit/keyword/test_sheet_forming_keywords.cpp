@@ -189,12 +189,24 @@ TEST(MatPiecewiseLinearPlasticity, CurveTableAndBilinear) {
   EXPECT_DOUBLE_EQ(m[2].tdel, 1e-7);
 }
 
-TEST(MatPiecewiseLinearPlasticity, NotSupportedYetAndBadTables) {
+TEST(MatPiecewiseLinearPlasticity, RatesNotSupportedYetAndBadTables) {
   constexpr std::string_view kKeyword = "*MAT_PIECEWISE_LINEAR_PLASTICITY";
-  expect_error("*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2e5,0.3,200\n40.0,5.0\n", 3, kKeyword,
-               "C", "C = 40 (strain rate effects) is not supported yet");
-  expect_error("*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2e5,0.3,200\n0,5.0\n", 3, kKeyword, "P",
-               "not supported yet");
+  // Cowper-Symonds: C and P together (read), one alone an error on the other; VP 1 and -1
+  // with rates are errors, without rates VP is kept.
+  const ReadResult rates =
+      read_ok("*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2e5,0.3,200\n40.0,5.0\n");
+  ASSERT_EQ(rates.model.piecewise_linear_materials.size(), 1u);
+  EXPECT_DOUBLE_EQ(rates.model.piecewise_linear_materials[0].c, 40.0);
+  EXPECT_DOUBLE_EQ(rates.model.piecewise_linear_materials[0].p, 5.0);
+  EXPECT_EQ(read_ok("*MAT_024\n1,7.8e-9,2e5,0.3,200\n0,0,0,0,1.0\n")
+                .model.piecewise_linear_materials.size(),
+            1u);
+  expect_error("*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2e5,0.3,200\n40.0\n", 3, kKeyword, "P",
+               "C = 40, P = 0: the Cowper-Symonds factor needs both");
+  expect_error("*MAT_PIECEWISE_LINEAR_PLASTICITY\n1,7.8e-9,2e5,0.3,200\n0,5.0\n", 3, kKeyword, "C",
+               "needs both");
+  expect_error("*MAT_024\n1,7.8e-9,2e5,0.3,200\n40.0,5.0,0,0,1.0\n", 3, "*MAT_024", "VP",
+               "VP = 1 is not supported (1: the viscoplastic formulation");
   expect_error("*MAT_024\n1,7.8e-9,2e5,0.3,200\n0,0,0,7\n", 3, "*MAT_024", "LCSR",
                "LCSR = 7 (a strain rate scaling curve) is not supported yet");
   expect_error("*MAT_024\n1,7.8e-9,2e5,0.3,200\n0,0,0,0,0,9\n", 3, "*MAT_024", "LCF",
@@ -214,7 +226,7 @@ TEST(MatPiecewiseLinearPlasticity, NotSupportedYetAndBadTables) {
   expect_error("*MAT_024\n1,0,2e5,0.3,200\n", 2, "*MAT_024", "RO", "RO must be > 0");
 }
 
-TEST(MatPowerLawPlasticity, ReadsAndRejectsRates) {
+TEST(MatPowerLawPlasticity, ReadsRatesAndRejectsHalfAPair) {
   const ReadResult r = read_ok(
       "*MAT_POWER_LAW_PLASTICITY_TITLE\n"
       "aluminium\n"
@@ -231,10 +243,15 @@ TEST(MatPowerLawPlasticity, ReadsAndRejectsRates) {
   EXPECT_EQ(m[0].where.line, 3);
   EXPECT_DOUBLE_EQ(m[1].sigy, 0.0);
   EXPECT_DOUBLE_EQ(m[1].epsf, 0.0);
-  expect_error("*MAT_018\n1,7.8e-9,2e5,0.3,600,0.2,40\n", 2, "*MAT_018", "SRC",
-               "SRC = 40 (strain rate effects) is not supported yet");
+  const ReadResult rates = read_ok("*MAT_018\n1,7.8e-9,2e5,0.3,600,0.2,40,5\n");
+  EXPECT_DOUBLE_EQ(rates.model.power_law_materials[0].src, 40.0);
+  EXPECT_DOUBLE_EQ(rates.model.power_law_materials[0].srp, 5.0);
+  expect_error("*MAT_018\n1,7.8e-9,2e5,0.3,600,0.2,40\n", 2, "*MAT_018", "SRP",
+               "SRC = 40, SRP = 0: the Cowper-Symonds factor needs both");
   expect_error("*MAT_POWER_LAW_PLASTICITY\n1,7.8e-9,2e5,0.3,600,0.2,0,5\n", 2,
-               "*MAT_POWER_LAW_PLASTICITY", "SRP", "not supported yet");
+               "*MAT_POWER_LAW_PLASTICITY", "SRC", "needs both");
+  expect_error("*MAT_018\n1,7.8e-9,2e5,0.3,600,0.2,40,5\n0,-1\n", 3, "*MAT_018", "VP",
+               "VP = -1 is not supported");
   expect_error("*MAT_018\n1,7.8e-9,2e5,0.3\n", 2, "*MAT_018", "K", "a value is required");
 }
 

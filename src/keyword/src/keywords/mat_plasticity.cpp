@@ -37,12 +37,15 @@ constexpr std::array kPwlCard1Fields{
 constexpr std::array kPwlCard2Fields{
     FieldSpec{.name = "C",
               .type = FieldType::kReal,
+              .min_value = 0.0,
               .unit = "1/time",
-              .description = "Cowper-Symonds rate parameter: must be 0 (not supported yet)"},
+              .description = "Cowper-Symonds C: the yield stress scales by 1 + (rate/C)^(1/P) "
+                             "(0: no rate effect)"},
     FieldSpec{.name = "P",
               .type = FieldType::kReal,
+              .min_value = 0.0,
               .unit = "-",
-              .description = "Cowper-Symonds rate exponent: must be 0 (not supported yet)"},
+              .description = "Cowper-Symonds P (0: no rate effect)"},
     FieldSpec{.name = "LCSS",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -55,7 +58,9 @@ constexpr std::array kPwlCard2Fields{
     FieldSpec{.name = "VP",
               .type = FieldType::kReal,
               .unit = "-",
-              .description = "rate formulation; kept as written (no effect without rates)"},
+              .description = "rate formulation: 0 scales the yield stress by the factor of the "
+                             "total strain rate (1 and -1 are errors with rates; without them "
+                             "kept as written)"},
     FieldSpec{.name = "LCF",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -119,12 +124,15 @@ constexpr std::array kPowerCard1Fields{
               .description = "hardening exponent"},
     FieldSpec{.name = "SRC",
               .type = FieldType::kReal,
+              .min_value = 0.0,
               .unit = "1/time",
-              .description = "strain rate parameter C: must be 0 (not supported yet)"},
+              .description = "Cowper-Symonds C: the yield stress scales by 1 + (rate/C)^(1/P) "
+                             "(0: no rate effect)"},
     FieldSpec{.name = "SRP",
               .type = FieldType::kReal,
+              .min_value = 0.0,
               .unit = "-",
-              .description = "strain rate parameter P: must be 0 (not supported yet)"},
+              .description = "Cowper-Symonds P (0: no rate effect)"},
 };
 constexpr std::array kPowerCard2Fields{
     FieldSpec{.name = "SIGY",
@@ -136,7 +144,9 @@ constexpr std::array kPowerCard2Fields{
     FieldSpec{.name = "VP",
               .type = FieldType::kReal,
               .unit = "-",
-              .description = "rate formulation; kept as written (no effect without rates)"},
+              .description = "rate formulation: 0 scales the yield stress by the factor of the "
+                             "total strain rate (1 and -1 are errors with rates; without them "
+                             "kept as written)"},
     FieldSpec{.name = "EPSF",
               .type = FieldType::kReal,
               .min_value = 0.0,
@@ -150,8 +160,6 @@ constexpr std::array kPowerCards{
              .fields = kPowerCard2Fields,
              .presence = "optional: a missing card is read as blank"},
 };
-
-constexpr std::string_view kRateNote = "strain rate effects";
 
 void read_mat_piecewise_linear(KeywordInput& in) {
   model::MatPiecewiseLinearPlasticityDesc mat;
@@ -189,8 +197,9 @@ void read_mat_piecewise_linear(KeywordInput& in) {
     mat.lcsr = c2.integer("LCSR");
     mat.vp = c2.real("VP");
     mat.lcf = c2.integer("LCF");
-    require_zero(in, line2->line, "C", mat.c, kRateNote);
-    require_zero(in, line2->line, "P", mat.p, kRateNote);
+    require_rate_pair(in, line2->line, "C", mat.c, "P", mat.p);
+    if (mat.c > 0.0)
+      require_rate_scaling(in, line2->line, mat.vp);
     if (mat.lcss < 0) {
       in.fail(line2->line, "LCSS",
               fmt::format("LCSS = {}: a negative curve or table id is not supported; give the "
@@ -270,13 +279,14 @@ void read_mat_power_law(KeywordInput& in) {
   require_positive(in, line->line, "RO", mat.density);
   require_positive(in, line->line, "E", mat.youngs_modulus);
   require_positive(in, line->line, "K", mat.k);
-  require_zero(in, line->line, "SRC", mat.src, kRateNote);
-  require_zero(in, line->line, "SRP", mat.srp, kRateNote);
+  require_rate_pair(in, line->line, "SRC", mat.src, "SRP", mat.srp);
   if (const auto line2 = in.next_line()) {
     const CardValues c2 = in.read(kPowerCards[2], *line2);
     mat.sigy = c2.real("SIGY");
     mat.vp = c2.real("VP");
     mat.epsf = c2.real("EPSF");
+    if (mat.src > 0.0)
+      require_rate_scaling(in, line2->line, mat.vp);
   }
   in.model().power_law_materials.push_back(std::move(mat));
 }
@@ -291,9 +301,11 @@ KeywordSpec mat_piecewise_linear_plasticity_keyword() {
           .summary =
               "Isotropic elasto-plasticity with isotropic hardening (material type 24): the "
               "yield stress against effective plastic strain from the curve LCSS, else from "
-              "the 8-point EPS/ES table, else bilinear from SIGY and ETAN. Strain rate effects "
-              "(C, P, LCSR), failure curves (LCF), tables of curves (negative LCSS) and user "
-              "failure (FAIL < 0) are errors. Also read as *MAT_024."};
+              "the 8-point EPS/ES table, else bilinear from SIGY and ETAN; with C and P the yield "
+              "stress scaled by the Cowper-Symonds factor 1 + (rate/C)^(1/P) (VP 0; "
+              "docs/materials.md: the rate measure). The rate curve LCSR, failure curves "
+              "(LCF), tables of curves (negative LCSS) and user failure (FAIL < 0) are "
+              "errors. Also read as *MAT_024."};
 }
 
 KeywordSpec mat_024_keyword() {
@@ -310,7 +322,8 @@ KeywordSpec mat_power_law_plasticity_keyword() {
           .cards = kPowerCards,
           .summary =
               "Isotropic plasticity with power-law hardening sigma_y = K (eps_yp + eps_p)^N "
-              "(material type 18). Strain rate effects (SRC, SRP) are errors. Also read as "
+              "(material type 18), with SRC and SRP the yield stress scaled by the Cowper-Symonds "
+              "factor 1 + (rate/SRC)^(1/SRP) (VP 0). Also read as "
               "*MAT_018."};
 }
 

@@ -47,7 +47,7 @@ constexpr std::array kPkCard2Fields{
               .min_value = 0.0,
               .unit = "1/time",
               .description = "Cowper-Symonds C: the yield stress scales by 1 + (rate/C)^(1/P) "
-                             "(0: no rate effect; shells: not supported yet)"},
+                             "(0: no rate effect)"},
     FieldSpec{.name = "SRP",
               .type = FieldType::kReal,
               .min_value = 0.0,
@@ -108,12 +108,7 @@ void read_mat_plastic_kinematic(KeywordInput& in) {
     mat.srp = c2.real("SRP");
     mat.fs = c2.real("FS");
     mat.vp = c2.real("VP");
-    if ((mat.src > 0.0) != (mat.srp > 0.0)) {
-      in.fail(line2->line, mat.src > 0.0 ? "SRP" : "SRC",
-              fmt::format("SRC = {}, SRP = {}: the Cowper-Symonds factor needs both (or neither, "
-                          "no rate effect)",
-                          mat.src, mat.srp));
-    }
+    require_rate_pair(in, line2->line, "SRC", mat.src, "SRP", mat.srp);
     if (mat.fs == 0.0) {
       mat.fs = kNoFailure;  // LS-DYNA reads a 0 as its default
     }
@@ -123,13 +118,7 @@ void read_mat_plastic_kinematic(KeywordInput& in) {
                           "supported: plyform deletes no elements; leave FS blank or 0",
                           mat.fs));
     }
-    if (mat.vp != 0.0) {
-      in.fail(line2->line, "VP",
-              fmt::format("VP = {} is not supported (1: the viscoplastic formulation, -1: the "
-                          "deviatoric strain rate); use VP = 0, the yield stress scaled by the "
-                          "Cowper-Symonds factor of the total strain rate",
-                          mat.vp));
-    }
+    require_rate_scaling(in, line2->line, mat.vp);
   }
   in.model().plastic_kinematic_materials.push_back(std::move(mat));
 }
@@ -290,8 +279,8 @@ KeywordSpec mat_plastic_kinematic_keyword() {
               "modulus E ETAN / (E - ETAN) split by BETA between the back stress "
               "(kinematic, BETA 0) and the yield stress (isotropic, BETA 1); the yield "
               "stress scaled by the Cowper-Symonds factor 1 + (rate/SRC)^(1/SRP) "
-              "(solids). Element erosion (FS), the viscoplastic formulation (VP 1) and "
-              "rate effects on shells are errors. Also read as *MAT_003."};
+              "(docs/materials.md: the rate measure). Element erosion (FS) and the "
+              "viscoplastic formulation (VP 1) are errors. Also read as *MAT_003."};
 }
 
 KeywordSpec mat_003_keyword() {

@@ -43,4 +43,29 @@ inline void require_positive(KeywordInput& in, int line, std::string_view field,
   }
 }
 
+/// The Cowper-Symonds pair (C and P, or SRC and SRP) of a J2 law: both > 0 (the yield stress
+/// scaled by 1 + (rate / C)^(1 / P)) or both 0 (no rate effect); one alone is an error on the
+/// missing one.
+inline void require_rate_pair(KeywordInput& in, int line, std::string_view c_field, double c,
+                              std::string_view p_field, double p) {
+  if ((c > 0.0) != (p > 0.0)) {
+    in.fail(line, std::string(c > 0.0 ? p_field : c_field),
+            fmt::format("{} = {}, {} = {}: the Cowper-Symonds factor needs both (or neither, "
+                        "no rate effect)",
+                        c_field, c, p_field, p));
+  }
+}
+
+/// VP of a law with Cowper-Symonds rates: 0 (the yield stress scaled by the factor of the
+/// total strain rate) is what plyform does; the other formulations are errors.
+inline void require_rate_scaling(KeywordInput& in, int line, double vp) {
+  if (vp != 0.0) {
+    in.fail(line, "VP",
+            fmt::format("VP = {} is not supported (1: the viscoplastic formulation, -1: the "
+                        "deviatoric strain rate); use VP = 0, the yield stress scaled by the "
+                        "Cowper-Symonds factor of the total strain rate",
+                        vp));
+  }
+}
+
 }  // namespace plyform::keyword

@@ -46,6 +46,10 @@ struct PiecewiseLinearPlasticity {
   double sigy = 0.0;
   double etan = 0.0;
   HardeningCurve curve;
+  /// C, P: Cowper-Symonds scaling of the yield stress by 1 + (rate / C)^(1 / P) (both > 0;
+  /// rate sqrt(D : D)); 0 and 0: none.
+  double rate_c = 0.0;
+  double rate_p = 0.0;
 };
 
 /// *MAT_POWER_LAW_PLASTICITY (018): J2 with sigma_y = k (eps_yp + eps_p)^n, eps_yp the strain
@@ -57,6 +61,9 @@ struct PowerLawPlasticity {
   double k = 0.0;
   double n = 0.0;
   double sigy = 0.0;
+  /// SRC, SRP: Cowper-Symonds scaling as *MAT_024's C, P.
+  double rate_c = 0.0;
+  double rate_p = 0.0;
 };
 
 /// *MAT_ELASTIC_PLASTIC_THERMAL (004): J2 plasticity with bilinear isotropic hardening whose

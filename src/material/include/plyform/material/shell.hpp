@@ -60,6 +60,9 @@ struct ShellPoints {
   /// large the step's strain and turn together. Null otherwise.
   const double* material_spin = nullptr;
   const double* frame_turn = nullptr;
+  /// The step the increments were taken over (their rate, for the laws' strain-rate effects:
+  /// Cowper-Symonds); 0 when unknown (no rate effect).
+  double dt = 0.0;
 };
 
 /// *MAT_ELASTIC, plane stress: d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise,
@@ -70,7 +73,9 @@ void shell_update(const core::ElasticMaterial& m, std::size_t n, const ShellPoin
 /// trial, then the consistent plane-stress return (Simo-Taylor): the plastic multiplier solves
 /// the plane-stress yield condition sigma_eq(sxx, syy, sxy) = sigma_y(eps_p + d eps_p) by a
 /// scalar Newton iteration (bisection-safeguarded), so szz = 0 exactly and the stress lies on
-/// the von Mises surface to round-off. Yield curve as yield_stress(); it must not soften.
+/// the von Mises surface to round-off. Yield curve as yield_stress(); it must not soften. With
+/// Cowper-Symonds constants the yield curve is scaled at each point by the factor of its strain
+/// rate (shell_strain_rate, cowper_symonds in constitutive.hpp).
 void shell_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, const ShellPoints& pts);
 
 /// *MAT_POWER_LAW_PLASTICITY (018), the same plane-stress return with

@@ -22,13 +22,13 @@ struct MatPiecewiseLinearPlasticityDesc {
   /// failure not considered). Kept as written: the build step decides.
   double fail = 1.0e21;
   double tdel = 0.0;  ///< TDEL: minimum time step for element deletion, time, as written
-  double c = 0.0;     ///< C: Cowper-Symonds rate parameter; must be 0 (not supported yet)
-  double p = 0.0;     ///< P: Cowper-Symonds rate exponent; must be 0 (not supported yet)
+  double c = 0.0;     ///< C: Cowper-Symonds rate parameter (0: no rate effect)
+  double p = 0.0;     ///< P: Cowper-Symonds rate exponent (0: no rate effect)
   /// LCSS: id of a *DEFINE_CURVE of yield stress (ordinate) against effective plastic strain
   /// (abscissa); 0 = none. When set, EPS/ES, SIGY and ETAN are ignored (as in LS-DYNA).
   int lcss = 0;
   int lcsr = 0;     ///< LCSR: strain rate scaling curve; must be 0 (not supported yet)
-  double vp = 0.0;  ///< VP: rate formulation, as written (no effect without rate effects)
+  double vp = 0.0;  ///< VP: rate formulation (0 with rate effects), as written
   int lcf = 0;      ///< LCF: failure strain curve; must be 0 (not supported yet)
   /// EPS1..EPSn and ES1..ESn: the optional table of effective plastic strain and yield stress
   /// (n = 2..8: up to the last non-zero ES; both empty when not given). Strains increase.
@@ -47,13 +47,13 @@ struct MatPowerLawPlasticityDesc {
   double poisson_ratio = 0.0;   ///< PR
   double k = 0.0;               ///< K: strength coefficient, stress
   double n = 0.0;               ///< N: hardening exponent
-  double src = 0.0;             ///< SRC: strain rate parameter C; must be 0 (not supported yet)
-  double srp = 0.0;             ///< SRP: strain rate parameter P; must be 0 (not supported yet)
+  double src = 0.0;             ///< SRC: Cowper-Symonds C (0: no rate effect)
+  double srp = 0.0;             ///< SRP: Cowper-Symonds P (0: no rate effect)
   /// SIGY (card 2): initial yield. LS-DYNA: below 0.02 it is the strain to yield eps_yp
   /// itself; from 0.02 on it is a yield stress and eps_yp = (SIGY / K)^(1/N). 0: eps_yp from
   /// the elastic limit. As written.
   double sigy = 0.0;
-  double vp = 0.0;       ///< VP (card 2): rate formulation, as written (no effect without rates)
+  double vp = 0.0;       ///< VP (card 2): rate formulation (0 with rate effects), as written
   double epsf = 0.0;     ///< EPSF (card 2): plastic failure strain, as written (0: none)
   SourceLocation where;  ///< the line of card 1
 };

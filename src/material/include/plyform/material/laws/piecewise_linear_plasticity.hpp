@@ -25,6 +25,8 @@ struct PiecewiseLinearPlasticityLaw {
     law.poisson = c.poisson_ratio;
     law.sigy = c.yield_stress;
     law.etan = c.tangent_modulus;
+    law.rate_c = c.c;
+    law.rate_p = c.p;
     if (c.lcss != 0) {
       const core::LoadCurve& lc = curve(c.lcss);
       law.curve.plastic_strain = lc.x;

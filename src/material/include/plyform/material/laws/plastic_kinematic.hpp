@@ -42,10 +42,8 @@ struct PlasticKinematicLaw {
   static void update_solid(const Parameters& m, const SolidPoints& p) {
     solid_update(m, p.n, p.d, p.w[0], p.w[1], p.w[2], p.dt, p.sigma, p.eps_p, p.history);
   }
-  /// The shell element does not pass its step to the laws yet: rate effects on shells are
-  /// rejected when the model is built (setup::build), so the rate factor here is 1.
   static void update_shell(const Parameters& m, std::size_t n, const ShellPoints& p) {
-    shell_update(m, n, p, 0.0);
+    shell_update(m, n, p, p.dt);
   }
 };
 

@@ -23,6 +23,8 @@ struct PowerLawPlasticityLaw {
     law.k = c.k;
     law.n = c.n;
     law.sigy = c.sigy;
+    law.rate_c = c.src;
+    law.rate_p = c.srp;
     return law;
   }
   static Moduli moduli(const Parameters& m) { return isotropic_moduli(m.young, m.poisson); }
