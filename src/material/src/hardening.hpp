@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "plyform/core/material.hpp"
 
@@ -52,6 +53,49 @@ struct TabulatedHardening {
     return (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
   }
 };
+
+/// A hardening law scaled by k, as its own type: a linear law stays linear (the shells' batched
+/// return takes it), any other is wrapped.
+inline LinearHardening scaled(const LinearHardening& h, double k) {
+  return {k * h.sigy, k * h.hp};
+}
+template <class H>
+ScaledHardening<H> scaled(const H& h, double k) {
+  return {h, k};
+}
+
+/// Two yield curves of a table by strain rate (*MAT_024's LCSS naming a *DEFINE_TABLE) and the
+/// weight w of the second at a point's rate: linear in the rate between them.
+struct RateTableHardening {
+  TabulatedHardening lo, hi;
+  double w;
+  [[nodiscard]] double value(double e) const {
+    return w == 0.0 ? lo.value(e) : (1.0 - w) * lo.value(e) + w * hi.value(e);
+  }
+  [[nodiscard]] double slope(double e) const {
+    return w == 0.0 ? lo.slope(e) : (1.0 - w) * lo.slope(e) + w * hi.slope(e);
+  }
+};
+
+/// The yield curves of *MAT_024's rate table around an effective strain rate (1/time): the
+/// table's values are rates, or their natural logarithms when the first is negative; below the
+/// first value the first curve, above the last the last.
+inline RateTableHardening rate_table_at(const core::PiecewiseLinearPlasticity& m, double rate) {
+  const auto tabulated = [&](std::size_t i) {
+    const core::HardeningCurve& c = m.rate_curves[i];
+    return TabulatedHardening{c.plastic_strain.data(), c.yield_stress.data(),
+                              std::min(c.plastic_strain.size(), c.yield_stress.size())};
+  };
+  const std::vector<double>& v = m.rate_values;
+  const double x = m.log_rates ? (rate > 0.0 ? std::log(rate) : -1e300) : rate;
+  if (v.size() == 1 || x <= v.front())
+    return {tabulated(0), tabulated(0), 0.0};
+  if (x >= v.back())
+    return {tabulated(v.size() - 1), tabulated(v.size() - 1), 0.0};
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(v.begin(), v.end(), x) - v.begin()) - 1;
+  return {tabulated(i), tabulated(i + 1), (x - v[i]) / (v[i + 1] - v[i])};
+}
 
 /// sigma_y = k (e0 + eps_p)^n.
 struct PowerHardening {

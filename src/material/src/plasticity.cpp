@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "hardening.hpp"
 #include "plyform/material/strain_rate.hpp"
@@ -33,13 +34,10 @@ double power_law_offset(const core::PowerLawPlasticity& m) {
 // ---------------------------------------------------------------------------------------------
 namespace {
 
-// The yield curve as it is (no rate effect): a factor of exactly 1 (x * 1.0 is x, so the
-// unscaled laws' results are unchanged to the bit).
-constexpr auto kUnscaled = [](std::size_t) { return 1.0; };
-
-// `scale(p)`: point p's factor on the yield curve (its Cowper-Symonds factor, or 1).
-template <class H, class Scale>
-void radial_return_kernel(const H& h0, const Scale& scale, double three_g, std::size_t n,
+// `hardening(p)`: point p's yield curve (the law's, scaled by the point's Cowper-Symonds
+// factor, or read from a rate table at the point's rate).
+template <class Make>
+void radial_return_kernel(const Make& hardening, double three_g, std::size_t n,
                           double* __restrict sxx, double* __restrict syy, double* __restrict szz,
                           double* __restrict sxy, double* __restrict syz, double* __restrict szx,
                           double* __restrict eps_p) {
@@ -49,7 +47,7 @@ void radial_return_kernel(const H& h0, const Scale& scale, double three_g, std::
     const double ss = dxx * dxx + dyy * dyy + dzz * dzz +
                       2.0 * (sxy[p] * sxy[p] + syz[p] * syz[p] + szx[p] * szx[p]);
     const double q_tr = std::sqrt(1.5 * ss);
-    const detail::ScaledHardening<H> h{h0, scale(p)};
+    const auto h = hardening(p);
     const double sy_n = h.value(eps_p[p]);
     if (!(q_tr > sy_n))
       continue;
@@ -71,16 +69,23 @@ void solid_j2(const Law& m, std::size_t n, ConstSymView d, const double* w_xy, c
   elastic_jaumann(core::ElasticMaterial{m.density, m.young, m.poisson}, n, d, w_xy, w_yz, w_zx, dt,
                   sigma);
   const double three_g = 1.5 * m.young / (1.0 + m.poisson);
+  const auto kernel = [&](const auto& hardening) {
+    radial_return_kernel(hardening, three_g, n, sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz,
+                         sigma.zx, eps_p);
+  };
+  if constexpr (std::is_same_v<Law, core::PiecewiseLinearPlasticity>) {
+    if (!m.rate_values.empty()) {
+      kernel([&](std::size_t p) { return detail::rate_table_at(m, solid_strain_rate(d, p)); });
+      return;
+    }
+  }
   const CowperSymonds rate{m.rate_c, m.rate_p};
   detail::with_hardening(m, [&](const auto& h) {
-    if (rate.on()) {
-      const auto k = [&](std::size_t p) { return rate.factor(solid_strain_rate(d, p)); };
-      radial_return_kernel(h, k, three_g, n, sigma.xx, sigma.yy, sigma.zz, sigma.xy, sigma.yz,
-                           sigma.zx, eps_p);
-    } else {
-      radial_return_kernel(h, kUnscaled, three_g, n, sigma.xx, sigma.yy, sigma.zz, sigma.xy,
-                           sigma.yz, sigma.zx, eps_p);
-    }
+    if (rate.on())
+      kernel(
+          [&](std::size_t p) { return detail::scaled(h, rate.factor(solid_strain_rate(d, p))); });
+    else
+      kernel([&](std::size_t) { return h; });
   });
 }
 
@@ -122,9 +127,9 @@ void solid_update(const core::ElasticPlasticThermal& m, std::size_t n, ConstSymV
                      sigma.xy + p, sigma.yz + p, sigma.zx + p};
     elastic_jaumann(core::ElasticMaterial{m.density, c.young, c.poisson}, 1, dp, w_xy + p, w_yz + p,
                     w_zx + p, dt, sp);
-    radial_return_kernel(detail::LinearHardening{c.sigy, c.hardening}, kUnscaled,
-                         1.5 * c.young / (1.0 + c.poisson), 1, sp.xx, sp.yy, sp.zz, sp.xy, sp.yz,
-                         sp.zx, eps_p + p);
+    const detail::LinearHardening h{c.sigy, c.hardening};
+    radial_return_kernel([&](std::size_t) { return h; }, 1.5 * c.young / (1.0 + c.poisson), 1,
+                         sp.xx, sp.yy, sp.zz, sp.xy, sp.yz, sp.zx, eps_p + p);
   }
 }
 

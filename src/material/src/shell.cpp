@@ -56,20 +56,21 @@ void plane_stress_elastic(double young, double nu, std::size_t n, const ShellPoi
 // plane_stress_return). The return changes p by p - p_tr, so the elastic thickness strain of
 // the trial is corrected by -(nu/E)(p - p_tr), and the plastic part is
 // d eps^p_zz = -(d eps^p_xx + d eps^p_yy) = -gamma p / 2.
-// `scale(p)`: point p's factor on the yield curve (its Cowper-Symonds factor, or 1).
-template <class H, class Scale>
-void plane_stress_return_kernel(const H& h0, const Scale& scale, double young, double nu,
-                                std::size_t n, double* __restrict sxx, double* __restrict syy,
+// `hardening(p)`: point p's yield curve (the law's, scaled by the point's Cowper-Symonds
+// factor, or read from a rate table at the point's rate).
+template <class Make>
+void plane_stress_return_kernel(const Make& hardening, double young, double nu, std::size_t n,
+                                double* __restrict sxx, double* __restrict syy,
                                 double* __restrict sxy, double* __restrict eps_p,
                                 double* __restrict dzz) {
+  using H = decltype(hardening(std::size_t{0}));
   if constexpr (std::is_same_v<H, detail::LinearHardening>) {
     // The common bilinear case: the yielding points' returns are solved together.
     detail::LinearPlaneStressBatch batch(sxx, syy, sxy, eps_p, dzz);
     for (std::size_t p = 0; p < n; ++p) {
       const double x = sxx[p], y = syy[p], t = sxy[p];
       const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
-      const double k = scale(p);
-      const detail::LinearHardening h{k * h0.sigy, k * h0.hp};
+      const detail::LinearHardening h = hardening(p);
       const double sy_n = h.value(eps_p[p]);
       if (psi2 > sy_n * sy_n)
         batch.add(p, young, nu, h.sigy, h.hp, x + y, x - y, t, std::sqrt(psi2));
@@ -82,7 +83,7 @@ void plane_stress_return_kernel(const H& h0, const Scale& scale, double young, d
   for (std::size_t p = 0; p < n; ++p) {
     const double x = sxx[p], y = syy[p], t = sxy[p];
     const double psi2 = x * x + y * y - x * y + 3.0 * t * t;
-    const detail::ScaledHardening<H> h{h0, scale(p)};
+    const H h = hardening(p);
     const double sy_n = h.value(eps_p[p]);
     if (!(psi2 > sy_n * sy_n))
       continue;
@@ -101,23 +102,30 @@ void plane_stress_return_kernel(const H& h0, const Scale& scale, double young, d
   }
 }
 
-// The yield curve as it is (no rate effect): a factor of exactly 1 (x * 1.0 is x, so the
-// unscaled laws' results are unchanged to the bit).
-constexpr auto kUnscaled = [](std::size_t) { return 1.0; };
-
 template <class Law>
 void shell_j2(const Law& m, std::size_t n, const ShellPoints& s) {
   // The rates read the increments, which the trial leaves as they are (it overwrites dzz,
   // which the rate does not read).
-  const CowperSymonds rate{m.rate_c, m.rate_p};
   plane_stress_elastic(m.young, m.poisson, n, s);
+  const auto kernel = [&](const auto& hardening) {
+    plane_stress_return_kernel(hardening, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p,
+                               s.dzz);
+  };
+  if constexpr (std::is_same_v<Law, core::PiecewiseLinearPlasticity>) {
+    if (!m.rate_values.empty()) {
+      kernel(
+          [&](std::size_t p) { return detail::rate_table_at(m, shell_strain_rate(s, p, s.dt)); });
+      return;
+    }
+  }
+  const CowperSymonds rate{m.rate_c, m.rate_p};
   detail::with_hardening(m, [&](const auto& h) {
     if (rate.on() && s.dt > 0.0) {
-      const auto k = [&](std::size_t p) { return rate.factor(shell_strain_rate(s, p, s.dt)); };
-      plane_stress_return_kernel(h, k, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p, s.dzz);
+      kernel([&](std::size_t p) {
+        return detail::scaled(h, rate.factor(shell_strain_rate(s, p, s.dt)));
+      });
     } else {
-      plane_stress_return_kernel(h, kUnscaled, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p,
-                                 s.dzz);
+      kernel([&](std::size_t) { return h; });
     }
   });
 }

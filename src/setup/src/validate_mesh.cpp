@@ -332,11 +332,22 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
 
   // Materials -> curves.
   for (const model::MatPiecewiseLinearPlasticityDesc& m : model.piecewise_linear_materials) {
-    if (m.lcss != 0 && !curves.contains(m.lcss)) {
+    const bool table = std::any_of(model.tables.begin(), model.tables.end(),
+                                   [&](const model::DefineTableDesc& t) { return t.id == m.lcss; });
+    if (m.lcss != 0 && !table && !curves.contains(m.lcss)) {
       errors.push_back({m.where, "*MAT_PIECEWISE_LINEAR_PLASTICITY", "LCSS",
                         cat("material ", m.id, ": curve ", m.lcss,
-                            " is not defined (no *DEFINE_CURVE with this id; tables of curves, "
-                            "*DEFINE_TABLE, are not supported yet)")});
+                            " is not defined (no *DEFINE_CURVE or *DEFINE_TABLE with this id)")});
+    }
+    // LS-DYNA ignores the Cowper-Symonds constants when LCSS is a table of curves by rate:
+    // plyform says so rather than pass over them.
+    if (table && (m.c > 0.0 || m.p > 0.0)) {
+      errors.push_back({m.where, "*MAT_PIECEWISE_LINEAR_PLASTICITY", "C",
+                        cat("material ", m.id, ": LCSS ", m.lcss,
+                            " is a table of yield curves by strain rate, which gives the rate "
+                            "effect; C = ",
+                            m.c, " and P = ", m.p,
+                            " would be ignored (LS-DYNA's rule): leave them 0 or give a curve")});
     }
   }
 

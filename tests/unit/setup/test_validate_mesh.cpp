@@ -217,7 +217,7 @@ TEST(ValidateMesh, ShellIdsAndReferences) {
         "*SECTION_SHELL: field SECID: section 1 is already defined at deck.k:",
         "*MAT_POWER_LAW_PLASTICITY: field MID: material 2 is already defined at deck.k:",
         "*MAT_PIECEWISE_LINEAR_PLASTICITY: field LCSS: material 5: curve 99 is not defined (no "
-        "*DEFINE_CURVE with this id; tables of curves, *DEFINE_TABLE, are not supported yet)",
+        "*DEFINE_CURVE or *DEFINE_TABLE with this id)",
         "*ELEMENT_SOLID: field PID: element 1: part 4 has section 1, which is not a "
         "*SECTION_SOLID"}) {
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\nin:\n" << text;
@@ -444,6 +444,30 @@ TEST(ValidateMesh, HistoryElementsAreFoundInTheirBlocks) {
   EXPECT_EQ(built.warnings[0].to_string(),
             "deck.k:45: *DATABASE_HISTORY_SHELL: element 3 is in rigid part 2: it has no "
             "stresses, so it is not in elout.csv");
+}
+
+// *MAT_024's LCSS may name a curve or a *DEFINE_TABLE of curves by rate; with a table the
+// Cowper-Symonds constants, which LS-DYNA would ignore, are an error naming C; an id that is
+// neither is an error on LCSS.
+TEST(ValidateMesh, RateTableOfMat024) {
+  const std::string head = "*MAT_024\n1,7.8e-9,2e5,0.3\n";
+  const std::string table =
+      "*DEFINE_TABLE\n10\n1.0,11\n100.0,12\n*DEFINE_CURVE\n11\n0,200\n1,300\n"
+      "*DEFINE_CURVE\n12\n0,250\n1,350\n";
+  const auto errors_of = [](const std::string& deck) {
+    const keyword::ReadResult read = keyword::read_deck_text(deck, "deck.k");
+    EXPECT_TRUE(read.ok()) << all(read.errors);
+    return validate(read.model);
+  };
+  EXPECT_TRUE(errors_of(head + "0,0,10\n" + table).empty());
+  const std::vector<Diagnostic> rates = errors_of(head + "40,5,10\n" + table);
+  ASSERT_EQ(rates.size(), 1u) << all(rates);
+  EXPECT_EQ(rates[0].field, "C");
+  EXPECT_NE(rates[0].message.find("would be ignored"), std::string::npos) << rates[0].message;
+  const std::vector<Diagnostic> missing = errors_of(head + "0,0,9\n" + table);
+  ASSERT_EQ(missing.size(), 1u) << all(missing);
+  EXPECT_EQ(missing[0].field, "LCSS");
+  EXPECT_NE(missing[0].message.find("no *DEFINE_CURVE or *DEFINE_TABLE"), std::string::npos);
 }
 
 }  // namespace

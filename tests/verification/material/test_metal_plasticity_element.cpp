@@ -312,6 +312,70 @@ std::vector<RateCase> rate_cases() {
           {"mat018", m018.str(), [=](double e) { return k * std::pow(e0 + e, n); }}};
 }
 
+// *MAT_024 with LCSS naming a *DEFINE_TABLE of yield curves by strain rate (here flat, perfectly
+// plastic curves at four rates, the values given as rates or, when the first is negative, as
+// their natural logarithms): in plastic flow at the constant true strain rate r the point's rate
+// is sqrt(3/2) r, and the flow stress is the table's curves read linearly in the value (rate or
+// log rate) between the two around it, within 1 %.
+TEST(RateTable, FlowStressIsTheTablesCurveAtThePointsRate) {
+  const std::vector<double> rates{1.0, 50.0, 300.0, 1000.0};
+  const std::vector<double> yields{2.5e8, 3.0e8, 3.6e8, 4.2e8};
+  for (const bool logarithmic : {false, true}) {
+    std::ostringstream m024;
+    m024.precision(12);
+    m024 << "*MAT_PIECEWISE_LINEAR_PLASTICITY\n1," << kRho << "," << kE << "," << kNu
+         << ",0.0,0.0\n"
+         << "0,0,10\n*DEFINE_TABLE\n10\n";
+    // In log form the first value is ln(0.01) < 0 (LS-DYNA's sign of the convention).
+    std::vector<double> values = rates;
+    if (logarithmic) {
+      values.front() = 0.01;
+      for (double& v : values)
+        v = std::log(v);
+    }
+    for (std::size_t i = 0; i < values.size(); ++i)
+      m024 << values[i] << "," << 11 + i << "\n";
+    for (std::size_t i = 0; i < values.size(); ++i)
+      m024 << "*DEFINE_CURVE\n" << 11 + i << "\n0.0," << yields[i] << "\n1.0," << yields[i] << "\n";
+    const auto want_at = [&](double rate) {
+      const double x = logarithmic ? std::log(rate) : rate;
+      std::size_t i = 0;
+      while (i + 2 < values.size() && x > values[i + 1])
+        ++i;
+      const double w = std::clamp((x - values[i]) / (values[i + 1] - values[i]), 0.0, 1.0);
+      return (1.0 - w) * yields[i] + w * yields[i + 1];
+    };
+    for (const Body body : {Body::hex, Body::shell}) {
+      for (const double rate : {20.0, 100.0, 400.0}) {
+        SCOPED_TRACE(std::string(logarithmic ? "log values" : "rate values") +
+                     (body == Body::hex ? " hex" : " shell") + ", rate " + std::to_string(rate));
+        const double end = 0.03 / rate;
+        std::vector<std::pair<double, double>> velocity{{0.0, 0.0}};
+        for (int i = 1; i <= 40; ++i) {
+          const double t = end * i / 40.0;
+          const double ramp = std::min(1.0, t / (0.05 * end));
+          velocity.emplace_back(t, ramp * rate * kSide * std::exp(rate * t));
+        }
+        const std::vector<State> states = run(body, deck(body, m024.str(), end, 60, velocity));
+        const double want = want_at(std::sqrt(1.5) * rate);
+        double worst = 0.0;
+        int checked = 0;
+        for (const State& st : states) {
+          if (st.strain > 0.015) {
+            worst = std::max(worst, std::abs(st.stress - want) / want);
+            ++checked;
+          }
+        }
+        EXPECT_GE(checked, 10);
+        EXPECT_LT(worst, 0.01);
+        std::printf("rate table (%s) %s at %g/s: flow stress %.4g MPa within %.2e\n",
+                    logarithmic ? "log" : "linear", body == Body::hex ? "hex" : "shell", rate,
+                    want * 1e-6, worst);
+      }
+    }
+  }
+}
+
 TEST(CowperSymonds, FlowStressFollowsTheFactorOnEveryLawAndElementAtThreeRates) {
   const double c = 40.0, p = 5.0;
   for (const RateCase& law : rate_cases()) {

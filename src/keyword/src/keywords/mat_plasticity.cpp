@@ -49,8 +49,10 @@ constexpr std::array kPwlCard2Fields{
     FieldSpec{.name = "LCSS",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "*DEFINE_CURVE of yield stress against effective plastic strain "
-                             "(0: none; tables are not supported)"},
+              .description = "*DEFINE_CURVE of yield stress against effective plastic strain, "
+                             "or a *DEFINE_TABLE of such curves by strain rate (values the "
+                             "rates, or their natural logarithms when the first is negative; "
+                             "then C and P must be 0) (0: none)"},
     FieldSpec{.name = "LCSR",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -302,8 +304,9 @@ KeywordSpec mat_piecewise_linear_plasticity_keyword() {
               "Isotropic elasto-plasticity with isotropic hardening (material type 24): the "
               "yield stress against effective plastic strain from the curve LCSS, else from "
               "the 8-point EPS/ES table, else bilinear from SIGY and ETAN; with C and P the yield "
-              "stress scaled by the Cowper-Symonds factor 1 + (rate/C)^(1/P) (VP 0; "
-              "docs/materials.md: the rate measure). The rate curve LCSR, failure curves "
+              "stress scaled by the Cowper-Symonds factor 1 + (rate/C)^(1/P) (VP 0), or with LCSS "
+              "naming a table the yield curve read between the curves around the point's rate "
+              "(docs/materials.md: the rate measure). The rate curve LCSR, failure curves "
               "(LCF), tables of curves (negative LCSS) and user failure (FAIL < 0) are "
               "errors. Also read as *MAT_024."};
 }

@@ -50,6 +50,13 @@ struct PiecewiseLinearPlasticity {
   /// rate sqrt(D : D)); 0 and 0: none.
   double rate_c = 0.0;
   double rate_p = 0.0;
+  /// LCSS naming a *DEFINE_TABLE: a yield curve per strain rate (the table's values, strictly
+  /// increasing; the natural logarithm of the rate when the first is negative, LS-DYNA's
+  /// convention), read linearly between the two curves around a point's rate sqrt(D : D) and
+  /// as the first or last curve outside them. Empty: none (curve and rates above).
+  std::vector<double> rate_values;
+  std::vector<HardeningCurve> rate_curves;
+  bool log_rates = false;
 };
 
 /// *MAT_POWER_LAW_PLASTICITY (018): J2 with sigma_y = k (eps_yp + eps_p)^n, eps_yp the strain

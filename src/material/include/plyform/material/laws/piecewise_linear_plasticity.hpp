@@ -16,9 +16,10 @@ struct PiecewiseLinearPlasticityLaw {
   static constexpr std::array<std::string_view, 0> history{};
   static constexpr std::array<std::string_view, 2> results{"stress", "plastic_strain"};
   static const auto& cards(const model::ModelDesc& d) { return d.piecewise_linear_materials; }
-  /// LCSS (yield stress against effective plastic strain) wins over the 8-point table.
+  /// LCSS (yield stress against effective plastic strain, or a table of such curves by
+  /// strain rate) wins over the 8-point table.
   static Parameters from_card(const model::MatPiecewiseLinearPlasticityDesc& c,
-                              const DeckCurve& curve) {
+                              const DeckCurve& curve, const DeckTable& table) {
     Parameters law;
     law.density = c.density;
     law.young = c.youngs_modulus;
@@ -27,7 +28,13 @@ struct PiecewiseLinearPlasticityLaw {
     law.etan = c.tangent_modulus;
     law.rate_c = c.c;
     law.rate_p = c.p;
-    if (c.lcss != 0) {
+    if (const core::CurveTable* t = c.lcss != 0 ? table(c.lcss) : nullptr) {
+      law.rate_values = t->value;
+      law.log_rates = !t->value.empty() && t->value.front() < 0.0;
+      for (const core::LoadCurve& lc : t->curve)
+        law.rate_curves.push_back({lc.x, lc.y});
+      law.curve = law.rate_curves.front();  // the yield curve at rest
+    } else if (c.lcss != 0) {
       const core::LoadCurve& lc = curve(c.lcss);
       law.curve.plastic_strain = lc.x;
       law.curve.yield_stress = lc.y;
