@@ -128,6 +128,18 @@ std::vector<State> run(Body b, const std::string& text) {
   return states;
 }
 
+// The far face's velocity for a constant true strain rate r over [0, end] (it grows with the
+// length), after a linear ramp over the first 5 %: 40 points of the curve.
+std::vector<std::pair<double, double>> constant_rate_pull(double rate, double end) {
+  std::vector<std::pair<double, double>> velocity{{0.0, 0.0}};
+  for (int i = 1; i <= 40; ++i) {
+    const double t = end * i / 40.0;
+    const double ramp = std::min(1.0, t / (0.05 * end));
+    velocity.emplace_back(t, ramp * rate * kSide * std::exp(rate * t));
+  }
+  return velocity;
+}
+
 std::string mat003(double beta, double etan, double src = 0.0, double srp = 0.0) {
   std::ostringstream os;
   os.precision(12);
@@ -227,12 +239,7 @@ TEST(PlasticKinematicRate, HexFlowStressFollowsCowperSymondsAtTwoRates) {
   const double c = 40.0, p = 5.0;
   for (const double rate : {20.0, 400.0}) {
     const double end = 0.03 / rate;  // 3 % strain
-    std::vector<std::pair<double, double>> velocity{{0.0, 0.0}};
-    for (int i = 1; i <= 40; ++i) {
-      const double t = end * i / 40.0;
-      const double ramp = std::min(1.0, t / (0.05 * end));
-      velocity.emplace_back(t, ramp * rate * kSide * std::exp(rate * t));
-    }
+    const std::vector<std::pair<double, double>> velocity = constant_rate_pull(rate, end);
     const std::vector<State> states =
         run(Body::hex, deck(Body::hex, mat003(1.0, 0.0, c, p), end, 60, velocity));
     const double want = kSigy * (1.0 + std::pow(std::sqrt(1.5) * rate / c, 1.0 / p));
@@ -350,12 +357,7 @@ TEST(RateTable, FlowStressIsTheTablesCurveAtThePointsRate) {
         SCOPED_TRACE(std::string(logarithmic ? "log values" : "rate values") +
                      (body == Body::hex ? " hex" : " shell") + ", rate " + std::to_string(rate));
         const double end = 0.03 / rate;
-        std::vector<std::pair<double, double>> velocity{{0.0, 0.0}};
-        for (int i = 1; i <= 40; ++i) {
-          const double t = end * i / 40.0;
-          const double ramp = std::min(1.0, t / (0.05 * end));
-          velocity.emplace_back(t, ramp * rate * kSide * std::exp(rate * t));
-        }
+        const std::vector<std::pair<double, double>> velocity = constant_rate_pull(rate, end);
         const std::vector<State> states = run(body, deck(body, m024.str(), end, 60, velocity));
         const double want = want_at(std::sqrt(1.5) * rate);
         double worst = 0.0;
@@ -384,12 +386,7 @@ TEST(CowperSymonds, FlowStressFollowsTheFactorOnEveryLawAndElementAtThreeRates) 
         SCOPED_TRACE(std::string(law.name) + (body == Body::hex ? " hex" : " shell") + ", rate " +
                      std::to_string(rate));
         const double end = 0.03 / rate;  // 3 % strain
-        std::vector<std::pair<double, double>> velocity{{0.0, 0.0}};
-        for (int i = 1; i <= 40; ++i) {
-          const double t = end * i / 40.0;
-          const double ramp = std::min(1.0, t / (0.05 * end));
-          velocity.emplace_back(t, ramp * rate * kSide * std::exp(rate * t));
-        }
+        const std::vector<std::pair<double, double>> velocity = constant_rate_pull(rate, end);
         const std::vector<State> states = run(body, deck(body, law.card, end, 60, velocity));
         const double factor = 1.0 + std::pow(std::sqrt(1.5) * rate / c, 1.0 / p);
         int checked = 0;

@@ -41,6 +41,17 @@ inline constexpr std::array kIdCardFields{
               .rest_of_line = true},
 };
 
+/// A corner of a segment (*SET_SEGMENT, *LOAD_SEGMENT): N1..N3 required, N4 blank, 0 or N3 for
+/// a triangle.
+inline constexpr FieldSpec segment_node(std::string_view name, bool required) {
+  return FieldSpec{.name = name,
+                   .type = FieldType::kInteger,
+                   .min_value = required ? 1 : 0,
+                   .unit = "-",
+                   .description = required ? "node id" : "node id (blank, 0 or N3: a triangle)",
+                   .required = required};
+}
+
 /// Fails with "<FIELD> = <value> ... is not supported yet" when a field that plyform cannot
 /// honour yet is not 0.
 inline void require_zero(KeywordInput& in, int line, std::string_view field, double value,

@@ -30,15 +30,6 @@ constexpr FieldSpec kArrivalField{
         "arrival (birth) time: no pressure before it; the curve is read at the "
         "run's time, not shifted"};
 
-constexpr FieldSpec segment_node(std::string_view name, bool required) {
-  return FieldSpec{.name = name,
-                   .type = FieldType::kInteger,
-                   .min_value = required ? 1 : 0,
-                   .unit = "-",
-                   .description = required ? "node id" : "node id (blank, 0 or N3: a triangle)",
-                   .required = required};
-}
-
 constexpr std::array kSegmentFields{
     kCurveField,
     kScaleField,

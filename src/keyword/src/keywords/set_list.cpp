@@ -83,14 +83,6 @@ constexpr std::array kShellCards{
              .numbering = FieldNumbering::kSequential},
 };
 
-constexpr FieldSpec segment_node(std::string_view name, bool required) {
-  return FieldSpec{.name = name,
-                   .type = FieldType::kInteger,
-                   .min_value = required ? 1 : 0,
-                   .unit = "-",
-                   .description = required ? "node id" : "node id (blank, 0 or N3: a triangle)",
-                   .required = required};
-}
 constexpr FieldSpec segment_attribute(std::string_view name) {
   return FieldSpec{.name = name, .type = FieldType::kReal, .description = "attribute; ignored"};
 }
