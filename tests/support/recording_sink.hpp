@@ -32,6 +32,13 @@ struct RecordingSink : engine::OutputSink {
   void heat(double time, const thermal::HeatLedger& h) override {
     heat_books.emplace_back(time, h);
   }
+  /// Rigid wall reports at the rwforc interval: (time, one report per wall).
+  std::vector<std::pair<double, std::vector<rigid::RigidWalls::Report>>> walls;
+  void rigid_walls(double time, const rigid::RigidWalls& w) override {
+    walls.emplace_back(time, std::vector<rigid::RigidWalls::Report>{});
+    for (std::size_t k = 0; k < w.size(); ++k)
+      walls.back().second.push_back(w.report(k));
+  }
   void nodout(const engine::Snapshot& s) override {
     if (on_nodout)
       on_nodout(s);

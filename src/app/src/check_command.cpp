@@ -295,6 +295,22 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                "normal N1 -> N2 -> N3)\n",
                m.pressure_loads.size(), m.pressure_segments.size());
   }
+  for (const core::RigidWall& w : m.rigid_walls) {
+    const std::string friction = w.friction == 0.0   ? "frictionless"
+                                 : w.friction >= 1.0 ? "no sliding"
+                                                     : fmt::format("Coulomb {}", w.friction);
+    fmt::print(out,
+               "rigid wall {}: {} plane through ({}, {}, {}), normal ({:.4g}, {:.4g}, {:.4g}), {} "
+               "slave nodes, {}{}\n",
+               w.id,
+               w.finite ? fmt::format("a {} x {} rectangle of the", w.length_l, w.length_m)
+                        : std::string("the"),
+               w.origin[0], w.origin[1], w.origin[2], w.normal[0], w.normal[1], w.normal[2],
+               w.nodes.size(), friction,
+               w.mass > 0.0
+                   ? fmt::format(", moving: mass {}, {} along the normal", w.mass, w.velocity0)
+                   : std::string());
+  }
   // What the build made of each contact: the sides as slave nodes and master segments, with
   // their offsets and SOFT = 0 penalty (docs/contact.md).
   for (const core::ContactInterface& c : m.contacts) {

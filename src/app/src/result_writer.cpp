@@ -17,6 +17,7 @@ namespace {
 constexpr const char* kGlstat = "glstat.csv";
 constexpr const char* kNodout = "nodout.csv";
 constexpr const char* kRbdout = "rbdout.csv";
+constexpr const char* kRwforc = "rwforc.csv";
 constexpr const char* kBndout = "bndout.csv";
 constexpr const char* kSpcforc = "spcforc.csv";
 constexpr const char* kSleout = "sleout.csv";
@@ -98,6 +99,13 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
                     std::vector<std::string>{"time", "part", "fx", "fy", "fz", "mx", "my", "mz",
                                              "x", "y", "z", "vx", "vy", "vz"},
                     at(kRbdout));
+  }
+  if (model.output.rwforc_dt > 0.0 && !model.rigid_walls.empty()) {
+    rwforc_.emplace(
+        outdir / kRwforc,
+        std::vector<std::string>{"time", "wall", "normal", "tangential", "fx", "fy", "fz",
+                                 "impulse", "nodes", "displacement", "velocity", "kinetic"},
+        at(kRwforc));
   }
   if (model.output.bndout_dt > 0.0 && !model.motions.empty()) {
     for (const core::PrescribedMotion& p : model.motions)
@@ -395,6 +403,17 @@ void ResultWriter::rigid_bodies(double time, const rigid::RigidBodies& bodies) {
   }
 }
 
+void ResultWriter::rigid_walls(double time, const rigid::RigidWalls& walls) {
+  if (!rwforc_)
+    return;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const rigid::RigidWalls::Report r = walls.report(k);
+    rwforc_->row({time, static_cast<double>(r.id), r.normal_force, r.tangential_force, r.force[0],
+                  r.force[1], r.force[2], r.impulse, static_cast<double>(r.held), r.displacement,
+                  r.velocity, r.kinetic});
+  }
+}
+
 void ResultWriter::boundary_forces(const engine::Snapshot& s) {
   if (!bndout_)
     return;
@@ -587,6 +606,8 @@ void ResultWriter::save_state(core::StateArchive& archive) {
     put(kNodout, nodout_->csv());
   if (rbdout_)
     put(kRbdout, *rbdout_);
+  if (rwforc_)
+    put(kRwforc, *rwforc_);
   if (bndout_)
     put(kBndout, *bndout_);
   if (spcforc_)

@@ -31,6 +31,7 @@ class ResultWriter : public engine::OutputSink {
   void nodout(const engine::Snapshot& s) override;
   void progress(double time, double end_time, long cycle, double dt, double wall) override;
   void rigid_bodies(double time, const rigid::RigidBodies& bodies) override;
+  void rigid_walls(double time, const rigid::RigidWalls& walls) override;
   void boundary_forces(const engine::Snapshot& s) override;
   void constraint_forces(const engine::Snapshot& s) override;
   void interface_energies(double time,
@@ -52,6 +53,7 @@ class ResultWriter : public engine::OutputSink {
   std::optional<output::GlstatFile> glstat_;
   std::optional<output::NodoutFile> nodout_;
   std::optional<output::CsvHistory> rbdout_;
+  std::optional<output::CsvHistory> rwforc_;
   std::optional<output::RcforcFile> rcforc_;
   std::optional<output::CsvHistory> bndout_;
   std::vector<core::Index> bndout_nodes_;  // prescribed-motion nodes, in index order

@@ -204,6 +204,7 @@ struct Simulation::State {
   std::vector<element::SolidBlockState> solids;
   std::vector<element::ShellBlockState> shells;
   std::optional<rigid::RigidBodies> rigid_bodies;
+  std::optional<rigid::RigidWalls> walls;  // *RIGIDWALL_PLANAR (none: empty)
   std::optional<contact::ContactSet> contact;
   std::optional<thermal::HeatSolver> heat;  // temperatures computed (SOLN 1 or 2)
   bool thermal_only = false;                // SOLN 1: no mechanics
@@ -249,6 +250,7 @@ struct Simulation::State {
   double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
   double next_bndout = 0.0, next_tprint = 0.0, next_heat = 0.0;
   double next_spcforc = 0.0, next_sleout = 0.0, next_matsum = 0.0, next_elout = 0.0;
+  double next_rwforc = 0.0;
   // Each deformable block's share of the nodal masses (*DATABASE_MATSUM only).
   std::vector<BlockMass> solid_mass, shell_mass;
   bool warned_thermal = false;    // a thermal step's iterations did not converge
@@ -424,14 +426,20 @@ void Simulation::State::set_up_run() {
   // Rigid nodes turn with their body: the rotation pass must not move them.
   for (core::Index ri : rigid_nodes)
     inv_inertia[static_cast<std::size_t>(ri)] = 0.0;
+  std::vector<unsigned char> shows_wall(n, 0);  // the walls move these nodes
+  for (const core::RigidWall& w : model.rigid_walls)
+    for (core::Index i : w.display_nodes)
+      shows_wall[static_cast<std::size_t>(i)] = 1;
   std::size_t massless = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (s.mass[i] > 0.0) {
       inv_mass[i] = 1.0 / s.mass[i];
-    } else if (!has_rigid || !is_rigid[i]) {
+    } else if ((!has_rigid || !is_rigid[i]) && !shows_wall[i]) {
       ++massless;
     }
   }
+  if (!model.rigid_walls.empty())
+    walls.emplace(model);
   if (massless > 0) {
     res.warnings.push_back(std::to_string(massless) +
                            " nodes belong to no element: they carry no mass and do not move");
@@ -919,6 +927,25 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
       }
     }
   }
+  if (walls) {
+    // The walls stop the nodes that would cross them: their impulse acts as a force at
+    // t_{n+1}, booked as the constraints' reactions are.
+    rigid::WallArrays arrays{model.x0.data(), model.y0.data(), model.z0.data(), s.ux.data(),
+                             s.uy.data(),     s.uz.data(),     s.mass.data(),   s.vx.data(),
+                             s.vy.data(),     s.vz.data()};
+    for (const rigid::WallCorrection& c : walls->apply(t_now, dt_next, dt_avg, arrays)) {
+      const auto i = static_cast<std::size_t>(c.node);
+      const double e[3] = {s.ex[i], s.ey[i], s.ez[i]};
+      const double vo[3] = {old_x[i], old_y[i], old_z[i]};
+      const double vc[3] = {s.vx[i], s.vy[i], s.vz[i]};
+      for (std::size_t d = 0; d < 3; ++d) {
+        const double r = s.mass[i] * (vc[d] - c.free[d]) / dt_avg;
+        prev_ext += vo[d] * r;
+        next_reaction += vc[d] * r;
+        next_ext += vc[d] * r + (vc[d] - c.free[d]) * e[d];
+      }
+    }
+  }
   if (dt_prev == 0.0) {
     // The first half step, [0, dt/2]. A constraint that sets a velocity at t = 0 (a motion
     // prescribed from rest, an SPC on a node that has an initial velocity) acts as an impulse:
@@ -1286,6 +1313,12 @@ void Simulation::State::write_outputs(bool last) {
     sink.constraint_forces(snapshot());
     while (next_spcforc <= t + eps_t)
       next_spcforc += out.spcforc_dt;
+  }
+  if (walls && out.rwforc_dt > 0.0 && due(next_rwforc, 1u << 10)) {
+    written |= 1u << 10;
+    sink.rigid_walls(t, *walls);
+    while (next_rwforc <= t + eps_t)
+      next_rwforc += out.rwforc_dt;
   }
   if (contact && out.sleout_dt > 0.0 && due(next_sleout, 1u << 8)) {
     written |= 1u << 8;
@@ -1669,6 +1702,11 @@ void Simulation::State::visit_state(core::StateArchive& a) {
   if (has_rigid) {
     const auto scope = a.scope("rigid");
     rigid_bodies->visit_state(a);
+  }
+  if (walls) {
+    const auto scope = a.scope("walls");
+    walls->visit_state(a);
+    a.value("rwforc_due", next_rwforc);
   }
   if (contact) {
     const auto scope = a.scope("contact");

@@ -89,6 +89,7 @@ KeywordSpec load_segment_keyword();
 KeywordSpec load_segment_set_keyword();
 KeywordSpec load_shell_element_keyword();
 KeywordSpec load_shell_set_keyword();
+KeywordSpec rigidwall_planar_keyword();
 KeywordSpec control_termination_keyword();
 KeywordSpec control_timestep_keyword();
 KeywordSpec control_energy_keyword();
@@ -116,6 +117,7 @@ KeywordSpec interface_springback_lsdyna_keyword();
 KeywordSpec control_output_keyword();
 KeywordSpec control_rigid_keyword();
 KeywordSpec database_sleout_keyword();
+KeywordSpec database_rwforc_keyword();
 KeywordSpec database_matsum_keyword();
 KeywordSpec database_tprint_keyword();
 KeywordSpec database_history_node_keyword();
@@ -208,6 +210,7 @@ std::span<const KeywordSpec> keyword_registry() {
       load_segment_set_keyword(),
       load_shell_element_keyword(),
       load_shell_set_keyword(),
+      rigidwall_planar_keyword(),
       control_termination_keyword(),
       control_timestep_keyword(),
       control_energy_keyword(),
@@ -235,6 +238,7 @@ std::span<const KeywordSpec> keyword_registry() {
       database_bndout_keyword(),
       database_spcforc_keyword(),
       database_sleout_keyword(),
+      database_rwforc_keyword(),
       database_matsum_keyword(),
       database_tprint_keyword(),
       database_history_node_keyword(),

@@ -11,6 +11,7 @@
 
 #include "build_contact.hpp"
 #include "build_expansion.hpp"
+#include "build_rigid_walls.hpp"
 #include "build_tables.hpp"
 #include "build_thermal.hpp"
 #include "plyform/element/shell_kernels.hpp"
@@ -566,6 +567,8 @@ struct Builder {
         m.output.spcforc_dt = a.dt;
       if (a.name == "SLEOUT")
         m.output.sleout_dt = a.dt;
+      if (a.name == "RWFORC")
+        m.output.rwforc_dt = a.dt;
       if (a.name == "MATSUM")
         m.output.matsum_dt = a.dt;
     }
@@ -651,6 +654,7 @@ BuildResult build(const model::ModelDesc& desc) {
   build_temperatures(desc, b.m, b.out.errors);
   build_thermal(desc, b.m, b.out.errors, b.out.warnings);
   build_thermal_expansion(desc, b.m, b.out.errors, b.out.warnings);
+  build_rigid_walls(desc, b.m, b.out.warnings);
   if (b.out.errors.empty())
     b.out.model = std::move(b.m);
   return std::move(b.out);

@@ -7,6 +7,7 @@
 #include "plyform/setup/validate_contact.hpp"
 #include "plyform/setup/validate_mesh.hpp"
 #include "validate_pressure_loads.hpp"
+#include "validate_rigid_walls.hpp"
 #include "validate_woven_ply.hpp"
 
 namespace plyform::setup {
@@ -65,6 +66,9 @@ std::vector<keyword::Diagnostic> validate(const model::ModelDesc& model) {
     errors.push_back(std::move(d));
   }
   for (keyword::Diagnostic& d : validate_pressure_loads(model)) {
+    errors.push_back(std::move(d));
+  }
+  for (keyword::Diagnostic& d : validate_rigid_walls(model)) {
     errors.push_back(std::move(d));
   }
 

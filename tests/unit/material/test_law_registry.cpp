@@ -45,8 +45,13 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
 }
 
 TEST(LawRegistry, IsotropicModuliAreTheClosedForms) {
-  const core::Material steel =
-      core::PiecewiseLinearPlasticity{7.85e-9, 210000.0, 0.3, 250.0, 1000.0, {}};
+  core::PiecewiseLinearPlasticity law;
+  law.density = 7.85e-9;
+  law.young = 210000.0;
+  law.poisson = 0.3;
+  law.sigy = 250.0;
+  law.etan = 1000.0;
+  const core::Material steel = law;
   EXPECT_DOUBLE_EQ(material::bulk_modulus(steel), 210000.0 / (3.0 * (1.0 - 0.6)));
   EXPECT_DOUBLE_EQ(material::shear_modulus(steel), 210000.0 / 2.6);
   EXPECT_DOUBLE_EQ(material::density(steel), 7.85e-9);

@@ -519,6 +519,17 @@ KeywordSpec database_sleout_keyword() {
               "and the part of it that friction dissipated."};
 }
 
+KeywordSpec database_rwforc_keyword() {
+  return {.name = "DATABASE_RWFORC",
+          .options = kNoOptions,
+          .handler = [](KeywordInput& in) { read_ascii(in, "RWFORC"); },
+          .cards = kAsciiCards,
+          .summary =
+              "The interval of rwforc.csv: each *RIGIDWALL_PLANAR's force on the structure "
+              "(normal and tangential, and its global components), its cumulative impulse and "
+              "work, the nodes it holds, and a moving wall's position and velocity."};
+}
+
 KeywordSpec database_matsum_keyword() {
   return {.name = "DATABASE_MATSUM",
           .options = kNoOptions,

@@ -10,6 +10,7 @@
 #include "plyform/core/contact.hpp"
 #include "plyform/core/load_curve.hpp"
 #include "plyform/core/material.hpp"
+#include "plyform/core/rigid_wall.hpp"
 #include "plyform/core/thermal.hpp"
 #include "plyform/core/types.hpp"
 
@@ -198,6 +199,7 @@ struct OutputRequests {
   double bndout_dt = 0.0;            ///< *DATABASE_BNDOUT (0: none)
   double spcforc_dt = 0.0;           ///< *DATABASE_SPCFORC (0: none): spcforc.csv
   double sleout_dt = 0.0;            ///< *DATABASE_SLEOUT (0: none): sleout.csv
+  double rwforc_dt = 0.0;            ///< *DATABASE_RWFORC (0: none): rwforc.csv
   double matsum_dt = 0.0;            ///< *DATABASE_MATSUM (0: none): matsum.csv
   double elout_dt = 0.0;             ///< *DATABASE_ELOUT (0: none or no element): elout.csv
   long d3dump_cycles = 0;            ///< *DATABASE_BINARY_D3DUMP CYCL (0: none)
@@ -235,8 +237,9 @@ struct Model {
   std::vector<std::array<Index, 4>> pressure_segments;
   std::vector<RigidMotion> rigid_motions;
   std::vector<RigidLoad> rigid_loads;
-  std::vector<double> v0x, v0y, v0z;  ///< initial velocities (empty: at rest)
-  std::vector<double> w0x, w0y, w0z;  ///< initial angular velocities of shell nodes (empty: none)
+  std::vector<RigidWall> rigid_walls;  ///< *RIGIDWALL_PLANAR, in deck order
+  std::vector<double> v0x, v0y, v0z;   ///< initial velocities (empty: at rest)
+  std::vector<double> w0x, w0y, w0z;   ///< initial angular velocities of shell nodes (empty: none)
   // Temperatures (the law reads the slave node's): *INITIAL_TEMPERATURE, *BOUNDARY_TEMPERATURE.
   std::vector<double> temperature0;  ///< per node at t = 0 (empty: 0 everywhere)
   std::vector<TemperatureHistory> temperature_histories;

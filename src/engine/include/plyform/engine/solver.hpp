@@ -20,6 +20,7 @@
 #include "plyform/engine/nodal_state.hpp"
 #include "plyform/engine/pass_timing.hpp"
 #include "plyform/rigid/rigid_bodies.hpp"
+#include "plyform/rigid/rigid_walls.hpp"
 #include "plyform/thermal/heat_solver.hpp"
 
 namespace plyform::engine {
@@ -80,6 +81,8 @@ class OutputSink {
   virtual void nodout(const Snapshot& s) = 0;  ///< at the nodout interval
   /// At the glstat interval when the model has rigid bodies: their resultants and motion.
   virtual void rigid_bodies(double /*time*/, const rigid::RigidBodies& /*bodies*/) {}
+  /// At the rwforc interval when the model has rigid walls: each wall's force and motion.
+  virtual void rigid_walls(double /*time*/, const rigid::RigidWalls& /*walls*/) {}
   /// At the rcforc interval when the model has contacts: each interface's resultant force on
   /// its slave side and its energy books.
   virtual void contact_forces(double /*time*/,

@@ -29,6 +29,7 @@
 #include "plyform/model/mat_thermal_plasticity_desc.hpp"
 #include "plyform/model/node_desc.hpp"
 #include "plyform/model/part_desc.hpp"
+#include "plyform/model/rigid_wall_desc.hpp"
 #include "plyform/model/section_shell_desc.hpp"
 #include "plyform/model/section_solid_desc.hpp"
 #include "plyform/model/set_desc.hpp"
@@ -86,6 +87,7 @@ struct ModelDesc {
   std::vector<LoadNodeDesc> nodal_loads;
   std::vector<LoadPressureDesc> pressure_loads;  ///< *LOAD_SEGMENT(_SET), *LOAD_SHELL_*
   std::vector<LoadRigidBodyDesc> rigid_body_loads;
+  std::vector<RigidWallDesc> rigid_walls;  ///< *RIGIDWALL_PLANAR(_FINITE, _MOVING, _FORCES)
   std::vector<InitialVelocityGenerationDesc> initial_velocities;
   std::vector<InitialVelocityNodeDesc> initial_node_velocities;
   std::vector<InitialTemperatureDesc> initial_temperatures;
