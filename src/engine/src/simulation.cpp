@@ -24,6 +24,7 @@
 #include "plyform/engine/solver.hpp"
 #include "plyform/engine/thread_governor.hpp"
 #include "plyform/material/law_registry.hpp"
+#include "tied_nodes.hpp"
 
 namespace plyform::engine {
 namespace {
@@ -205,6 +206,7 @@ struct Simulation::State {
   std::vector<element::ShellBlockState> shells;
   std::optional<rigid::RigidBodies> rigid_bodies;
   std::optional<rigid::RigidWalls> walls;  // *RIGIDWALL_PLANAR (none: empty)
+  std::optional<TiedNodes> ties;           // the tied contacts (none: empty)
   std::optional<contact::ContactSet> contact;
   std::optional<thermal::HeatSolver> heat;  // temperatures computed (SOLN 1 or 2)
   bool thermal_only = false;                // SOLN 1: no mechanics
@@ -440,6 +442,10 @@ void Simulation::State::set_up_run() {
   }
   if (!model.rigid_walls.empty())
     walls.emplace(model);
+  if (!model.tied.empty()) {
+    ties.emplace(model);
+    ties->lump(s.mass, s.inertia, inv_mass, inv_inertia);
+  }
   if (massless > 0) {
     res.warnings.push_back(std::to_string(massless) +
                            " nodes belong to no element: they carry no mass and do not move");
@@ -776,7 +782,9 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
   const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
   w_full = dt_prev / (2.0 * dt_avg);
-  double first_body_work = 0.0;         // the bodies' reactions over [0, dt/2] (first call only)
+  double first_body_work = 0.0;  // the bodies' reactions over [0, dt/2] (first call only)
+  if (ties)
+    ties->gather(s);                    // before any node's forces are read
   for (core::Index ri : rigid_nodes) {  // the velocity pass zeroes the forces
     const auto i = static_cast<std::size_t>(ri);
     rfx[i] = s.fx[i];
@@ -946,6 +954,8 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
       }
     }
   }
+  if (ties)
+    next_ext += ties->follow(s);
   if (dt_prev == 0.0) {
     // The first half step, [0, dt/2]. A constraint that sets a velocity at t = 0 (a motion
     // prescribed from rest, an SPC on a node that has an initial velocity) acts as an impulse:

@@ -68,6 +68,8 @@ KeywordSpec contact_forming_one_way_surface_to_surface_keyword();
 KeywordSpec contact_automatic_surface_to_surface_keyword();
 KeywordSpec contact_automatic_one_way_surface_to_surface_keyword();
 KeywordSpec contact_automatic_single_surface_keyword();
+KeywordSpec contact_tied_nodes_to_surface_keyword();
+KeywordSpec contact_tied_shell_edge_to_surface_keyword();
 KeywordSpec boundary_spc_node_keyword();
 KeywordSpec boundary_spc_set_keyword();
 KeywordSpec boundary_prescribed_motion_node_keyword();
@@ -189,6 +191,8 @@ std::span<const KeywordSpec> keyword_registry() {
       contact_automatic_surface_to_surface_keyword(),
       contact_automatic_one_way_surface_to_surface_keyword(),
       contact_automatic_single_surface_keyword(),
+      contact_tied_nodes_to_surface_keyword(),
+      contact_tied_shell_edge_to_surface_keyword(),
       boundary_spc_node_keyword(),
       boundary_spc_set_keyword(),
       boundary_prescribed_motion_node_keyword(),

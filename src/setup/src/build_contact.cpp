@@ -15,6 +15,7 @@
 #include "plyform/material/law_registry.hpp"
 #include "plyform/setup/cohesive_law.hpp"
 #include "plyform/setup/contact_penalty.hpp"
+#include "tied_search.hpp"
 
 namespace plyform::setup {
 namespace {
@@ -427,20 +428,36 @@ struct ContactBuilder {
       for (int j = 0; j < corners(s); ++j)
         around[fill[static_cast<std::size_t>(
             surface->segments[4 * s + static_cast<std::size_t>(j)])]++] = static_cast<Index>(s);
+    // A tie holds its slave node on its segment: the two touch as if through the mesh (a
+    // flange tied onto a flange lies within their thicknesses, and would be pushed apart).
+    std::vector<std::vector<Index>> tied_to(m.node_count());
+    for (const core::TiedInterface& t : m.tied) {
+      for (std::size_t k = 0; k < t.slaves.size(); ++k) {
+        for (Index q : t.segment[k]) {
+          tied_to[static_cast<std::size_t>(t.slaves[k])].push_back(q);
+          tied_to[static_cast<std::size_t>(q)].push_back(t.slaves[k]);
+        }
+      }
+    }
     p.exclude_start.assign(1, 0);
     std::vector<Index> near;
     for (Index v : p.slave_nodes) {
       near.clear();
       const auto vi = static_cast<std::size_t>(v);
-      for (std::size_t a = start[vi]; a < start[vi + 1]; ++a) {
-        const auto s = static_cast<std::size_t>(around[a]);
-        for (int j = 0; j < corners(s); ++j) {
-          const auto u =
-              static_cast<std::size_t>(surface->segments[4 * s + static_cast<std::size_t>(j)]);
-          near.insert(near.end(), around.begin() + static_cast<long>(start[u]),
-                      around.begin() + static_cast<long>(start[u + 1]));
+      const auto segments_near = [&](std::size_t x) {
+        for (std::size_t a = start[x]; a < start[x + 1]; ++a) {
+          const auto s = static_cast<std::size_t>(around[a]);
+          for (int j = 0; j < corners(s); ++j) {
+            const auto u =
+                static_cast<std::size_t>(surface->segments[4 * s + static_cast<std::size_t>(j)]);
+            near.insert(near.end(), around.begin() + static_cast<long>(start[u]),
+                        around.begin() + static_cast<long>(start[u + 1]));
+          }
         }
-      }
+      };
+      segments_near(vi);
+      for (Index u : tied_to[vi])
+        segments_near(static_cast<std::size_t>(u));
       std::sort(near.begin(), near.end());
       near.erase(std::unique(near.begin(), near.end()), near.end());
       p.exclude.insert(p.exclude.end(), near.begin(), near.end());
@@ -471,6 +488,82 @@ struct ContactBuilder {
     return p;
   }
 
+  // A tied contact: each slave node within reach of a master segment follows it
+  // (find_ties); nodes out of reach stay free, counted in a warning.
+  void build_tie(const model::ContactDesc& c) {
+    std::vector<Index> only, unused;
+    const std::optional<Surface> slave = side_surface(c, c.sstyp, c.ssid, "SSID", only);
+    if (!slave)
+      return;
+    const std::optional<Surface> master = side_surface(c, c.mstyp, c.msid, "MSID", unused);
+    if (!master)
+      return;
+    // The slave nodes (a node set's, else the side's segments' nodes) with the mean thickness
+    // of the slave side's shells around each.
+    const std::size_t n = m.node_count();
+    std::vector<double> thick(n, 0.0), count(n, 0.0);
+    for (std::size_t k = 0; k < slave->size(); ++k) {
+      const Index* q = &slave->segments[4 * k];
+      for (int j = 0; j < (q[2] == q[3] ? 3 : 4); ++j) {
+        thick[static_cast<std::size_t>(q[j])] += slave->thickness[k];
+        count[static_cast<std::size_t>(q[j])] += 1.0;
+      }
+    }
+    std::vector<Index> nodes = only;
+    if (nodes.empty())
+      for (std::size_t i = 0; i < n; ++i)
+        if (count[i] > 0.0)
+          nodes.push_back(static_cast<Index>(i));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::vector<double> slave_t(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const auto i = static_cast<std::size_t>(nodes[k]);
+      slave_t[k] = count[i] > 0.0 ? thick[i] / count[i] : 0.0;
+    }
+    const std::vector<TieFound> found =
+        find_ties(m, nodes, slave_t, master->segments, master->thickness, c.sst, c.mst);
+    core::TiedInterface t;
+    t.id = c.id;
+    t.keyword = c.keyword;
+    t.rotations = c.kind == model::ContactKind::tied_shell_edge_to_surface;
+    std::size_t free = 0, not_shell = 0;
+    core::GlobalId first_free = 0;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const TieFound& f = found[k];
+      if (f.segment < 0) {
+        if (free++ == 0)
+          first_free = m.node_id[static_cast<std::size_t>(nodes[k])];
+        continue;
+      }
+      const auto sg = static_cast<std::size_t>(f.segment);
+      if (t.rotations && master->shell[sg] < 0) {
+        ++not_shell;
+        continue;
+      }
+      const Index* q = &master->segments[4 * sg];
+      t.slaves.push_back(nodes[k]);
+      t.segment.push_back({q[0], q[1], q[2], q[3]});
+      t.weight.push_back(f.weight);
+    }
+    const std::string name = c.id != 0 ? fmt::format("tied contact {}", c.id) : "a tied contact";
+    if (not_shell > 0) {
+      error(c.card1, c.keyword, "MSID",
+            fmt::format("{}: {} slave nodes lie on master faces of solids, which have no "
+                        "rotations to tie a shell edge's to; name shell parts or segments",
+                        name, not_shell));
+    }
+    if (free > 0) {
+      warnings.push_back(
+          {c.card1, c.keyword, "SSID",
+           fmt::format("{}: {} of its {} slave nodes are out of reach of every master segment "
+                       "(the first is node {}; reach 0.6 times the two sides' thicknesses, SST "
+                       "and MST where given): they are not tied",
+                       name, free, nodes.size(), first_free)});
+    }
+    m.tied.push_back(std::move(t));
+  }
+
   void build() {
     index();
     const double slsfac =
@@ -481,6 +574,10 @@ struct ContactBuilder {
     const int penopt_given = d.control_contact ? d.control_contact->penopt : 0;
     const int nsbcs = d.control_contact ? d.control_contact->nsbcs : 0;
     const bool thkchg = d.control_contact && d.control_contact->thkchg == 1;
+    // The ties first: a single surface leaves the pairs they hold together out of its search.
+    for (const model::ContactDesc& c : d.contacts)
+      if (model::is_tied(c.kind))
+        build_tie(c);
     std::unordered_map<int, const model::ContactDesc*> first_with_id;
     for (const model::ContactDesc& c : d.contacts) {
       if (c.id != 0) {
@@ -493,6 +590,8 @@ struct ContactBuilder {
                            c.id, it->second->where.file, it->second->where.line)});
         }
       }
+      if (model::is_tied(c.kind))
+        continue;
       core::ContactInterface ci;
       ci.id = c.id;
       ci.keyword = c.keyword;
@@ -715,15 +814,21 @@ void remove_initial_penetrations(const model::ModelDesc& desc, core::Model& mode
       break;
     // The contacts' areas, stiffnesses and offsets from the moved nodes.
     model.contacts.clear();
+    model.tied.clear();
     Diagnostics again_errors, again_warnings;
     ContactBuilder again{desc, model, again_errors, again_warnings, Geometry{model}, {}, {},
                          {},   {}};
     again.build();
   }
-  for (std::size_t c = 0; c < moved.size() && c < desc.contacts.size(); ++c) {
+  // The interfaces in the model's order: the deck's contacts less the tied ones.
+  std::vector<const model::ContactDesc*> interfaces;
+  for (const model::ContactDesc& cd : desc.contacts)
+    if (!model::is_tied(cd.kind))
+      interfaces.push_back(&cd);
+  for (std::size_t c = 0; c < moved.size() && c < interfaces.size(); ++c) {
     if (moved[c].count == 0)
       continue;
-    const model::ContactDesc& cd = desc.contacts[c];
+    const model::ContactDesc& cd = *interfaces[c];
     warnings.push_back(
         {cd.where, cd.keyword, "IGNORE",
          fmt::format("contact {}: {} slave node moves to clear penetrations at t = 0 (deepest "
@@ -741,6 +846,7 @@ void build_contacts(const model::ModelDesc& desc, core::Model& model, Diagnostic
   b.build();
   if (errors.empty())
     remove_initial_penetrations(desc, model, warnings);
+  drop_conflicting_slaves(desc, model, warnings);
 }
 
 void build_temperatures(const model::ModelDesc& desc, core::Model& model, Diagnostics& errors) {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 #include <unordered_map>
-#include <variant>
 
 #include "id_table.hpp"
+#include "node_roles.hpp"
 
 namespace plyform::setup {
 
@@ -29,41 +29,6 @@ Vec cross(const Vec& a, const Vec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// Why a node is not a slave of any wall, whatever the wall: 0 it may be one.
-enum Excluded : unsigned char { kFree = 0, kNoElement, kRigid, kHeld };
-
-std::vector<unsigned char> exclusions(const core::Model& m) {
-  const std::size_t n = m.node_count();
-  std::vector<unsigned char> why(n, kNoElement);
-  const auto mark = [&](const auto& blocks) {
-    for (const auto& b : blocks) {
-      const bool rigid = std::holds_alternative<core::RigidMaterial>(
-          m.materials[static_cast<std::size_t>(b.material)]);
-      for (Index c : b.connectivity) {
-        unsigned char& w = why[static_cast<std::size_t>(c)];
-        if (rigid)
-          w = kRigid;
-        else if (w == kNoElement)
-          w = kFree;
-      }
-    }
-  };
-  mark(m.solid_blocks);
-  mark(m.shell_blocks);
-  constexpr unsigned kTranslations = core::dof_x | core::dof_y | core::dof_z;
-  for (const core::FixedDofs& f : m.fixed) {
-    unsigned char& w = why[static_cast<std::size_t>(f.node)];
-    if ((f.dofs & kTranslations) != 0 && w == kFree)
-      w = kHeld;
-  }
-  for (const core::PrescribedMotion& p : m.motions) {
-    unsigned char& w = why[static_cast<std::size_t>(p.node)];
-    if (w == kFree)
-      w = kHeld;
-  }
-  return why;
-}
-
 }  // namespace
 
 void build_rigid_walls(const model::ModelDesc& desc, core::Model& m,
@@ -77,7 +42,11 @@ void build_rigid_walls(const model::ModelDesc& desc, core::Model& m,
   std::unordered_map<int, const model::SetListDesc*> node_sets;
   for (const model::SetListDesc& s : desc.node_sets)
     node_sets.emplace(s.id, &s);
-  const std::vector<unsigned char> why = exclusions(m);
+  std::vector<unsigned char> why = node_roles(m);
+  for (const core::TiedInterface& t : m.tied)  // a tie moves its slaves
+    for (Index i : t.slaves)
+      if (why[static_cast<std::size_t>(i)] == kFreeNode)
+        why[static_cast<std::size_t>(i)] = kHeldNode;
   // A node lies behind a wall when it is further than this below it (round-off of the
   // coordinates: a node written on the wall is in front of it).
   double size = 0.0;
@@ -122,15 +91,15 @@ void build_rigid_walls(const model::ModelDesc& desc, core::Model& m,
         pick[static_cast<std::size_t>(index.at(id))] = 0;
     for (Index i : w.display_nodes)
       pick[static_cast<std::size_t>(i)] = 0;
-    std::array<std::size_t, 4> left{};  // by Excluded
+    std::array<std::size_t, 4> left{};  // by NodeRole
     std::size_t behind = 0, far = 0;
     core::GlobalId first_behind = 0, first_held = 0;
     for (std::size_t i = 0; i < n; ++i) {
       if (!pick[i])
         continue;
-      if (why[i] != kFree) {
+      if (why[i] != kFreeNode) {
         ++left[why[i]];
-        if (why[i] == kHeld && first_held == 0)
+        if (why[i] == kHeldNode && first_held == 0)
           first_held = m.node_id[i];
         continue;
       }
@@ -166,17 +135,17 @@ void build_rigid_walls(const model::ModelDesc& desc, core::Model& m,
                "); they are left out: a wall never pushes a node through itself. Check the "
                "normal's direction (from XT, YT, ZT to XH, YH, ZH, towards the nodes)")});
     }
-    if (left[kHeld] > 0) {
+    if (left[kHeldNode] > 0) {
       warnings.push_back(
           {d.where, d.keyword, "",
-           cat(name, ": ", left[kHeld],
-               " slave nodes are held by a constraint or a prescribed motion (the first is "
+           cat(name, ": ", left[kHeldNode],
+               " slave nodes are held by a constraint, a prescribed motion or a tie (the first is "
                "node ",
                first_held, "); the wall does not act on them")});
     }
     if (w.nodes.empty()) {
       warnings.push_back({d.where, d.keyword, "",
-                          cat(name, " has no slave node: it acts on nothing (", left[kRigid],
+                          cat(name, " has no slave node: it acts on nothing (", left[kRigidNode],
                               " rigid-body nodes, ", left[kNoElement], " nodes of no element, ",
                               far, " beyond OFFSET left out)")});
     }

@@ -815,4 +815,51 @@ KeywordSpec contact_automatic_one_way_surface_to_surface_keyword() {
               "may name it, without _TIEBREAK)."};
 }
 
+namespace {
+
+constexpr std::array<std::string_view, 6> kTiedOptions{"",       "ID",        "TITLE",
+                                                       "OFFSET", "OFFSET_ID", "OFFSET_TITLE"};
+
+void read_tied(KeywordInput& in, model::ContactKind kind) {
+  read_contact(in, kind);
+  in.model().contacts.back().offset = in.option().starts_with("OFFSET");
+}
+
+}  // namespace
+
+KeywordSpec contact_tied_nodes_to_surface_keyword() {
+  return {
+      .name = "CONTACT_TIED_NODES_TO_SURFACE",
+      .options = kTiedOptions,
+      .handler = [](KeywordInput& in) { read_tied(in, model::ContactKind::tied_nodes_to_surface); },
+      .cards = kCards,
+      .summary =
+          "Ties slave nodes to the master surface for the whole run: each slave node within "
+          "the search distance of a master segment at t = 0 (0.6 times the sum of the two "
+          "sides' thicknesses, SST and MST where given; 5 % of the segment's diagonal at "
+          "least) follows the point of the segment it projects to, a constraint that moves "
+          "its mass and forces onto the segment's nodes (momentum is conserved exactly). Its "
+          "translations only: a shell node's rotations stay free. SSID: node set (SSTYP 4), "
+          "part (3), part set (2) or segment set (0, its nodes); MSID: segment set, part or "
+          "part set. The node keeps its distance to the surface (with or without _OFFSET: "
+          "plyform does not move it onto the surface). Slave nodes out of reach stay free "
+          "(counted in a warning); friction, penalty and thermal fields are not used "
+          "(docs/contact.md, \"Tied contacts\")."};
+}
+
+KeywordSpec contact_tied_shell_edge_to_surface_keyword() {
+  return {
+      .name = "CONTACT_TIED_SHELL_EDGE_TO_SURFACE",
+      .options = kTiedOptions,
+      .handler =
+          [](KeywordInput& in) { read_tied(in, model::ContactKind::tied_shell_edge_to_surface); },
+      .cards = kCards,
+      .summary =
+          "As *CONTACT_TIED_NODES_TO_SURFACE, and the slave shell nodes' rotations are tied "
+          "too: each turns with its master segment, and a slave node at a distance from the "
+          "surface (_OFFSET, or a shell's offset) moves as a point rigidly linked to it, so "
+          "the tie carries moments (a shell edge welded onto a surface). The master segments "
+          "must be shells (nodes with rotations)."};
+}
+
 }  // namespace plyform::keyword

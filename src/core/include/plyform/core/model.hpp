@@ -12,6 +12,7 @@
 #include "plyform/core/material.hpp"
 #include "plyform/core/rigid_wall.hpp"
 #include "plyform/core/thermal.hpp"
+#include "plyform/core/tied_interface.hpp"
 #include "plyform/core/types.hpp"
 
 namespace plyform::core {
@@ -249,6 +250,8 @@ struct Model {
   std::vector<HeatBoundary> heat_boundaries;
   // Contact interfaces, in deck order.
   std::vector<ContactInterface> contacts;
+  /// Tied contacts, in deck order (constraints: not in `contacts`).
+  std::vector<TiedInterface> tied;
   Controls controls;
   OutputRequests output;
 

@@ -16,7 +16,15 @@ enum class ContactKind {
   automatic_surface_to_surface,          ///< *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE (two-way)
   automatic_one_way_surface_to_surface,  ///< *CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE
   automatic_single_surface,              ///< *CONTACT_AUTOMATIC_SINGLE_SURFACE (SSID only)
+  tied_nodes_to_surface,                 ///< *CONTACT_TIED_NODES_TO_SURFACE(_OFFSET)
+  tied_shell_edge_to_surface,            ///< *CONTACT_TIED_SHELL_EDGE_TO_SURFACE(_OFFSET)
 };
+
+/// A tied contact: the slave nodes follow the master surface (a constraint, not a contact
+/// pass; setup::build makes core::TiedInterface of it).
+inline bool is_tied(ContactKind k) {
+  return k == ContactKind::tied_nodes_to_surface || k == ContactKind::tied_shell_edge_to_surface;
+}
 
 /// What SSID / MSID name (LS-DYNA's SSTYP / MSTYP codes).
 enum class ContactSideType : int {
@@ -33,6 +41,7 @@ struct ContactDesc {
   std::string keyword;  ///< the keyword as written (upper case), for messages
   int id = 0;           ///< CID of the _ID option (0 without it)
   std::string heading;  ///< HEADING of the _ID option
+  bool offset = false;  ///< _OFFSET of a tied contact
   // Card 1
   int ssid = 0;  ///< SSID: slave side (set or part id)
   int msid = 0;  ///< MSID: master side

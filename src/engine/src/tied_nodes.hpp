@@ -1,0 +1,56 @@
+#pragma once
+// The tied contacts in the cycle (core::TiedInterface): each tied slave node s follows the
+// point of its master segment with weights w_j (the segment's shape functions there), at the
+// offset d = x_s - sum w_j x_j it had (docs/contact.md, "Tied contacts"). The constraint moves
+// the slave's mass and forces onto the segment's nodes, so momentum is conserved exactly:
+//   m_j += w_j m_s (once, at the start), f_j += w_j f_s (every cycle, before the velocity
+//   update), and after it  v_s = sum w_j v_j.
+// With rotations tied (a shell edge), the slave turns with the segment's mean rotation
+// omega = sum w_j omega_j and, at its offset, moves as a rigidly linked point:
+//   v_s = sum w_j v_j + omega x d;  the moment M_s + d x f_s goes to the nodes by w_j, and the
+//   rotary inertia I_s + m_s |d|^2 with it.
+// The kinetic energy the books measure (with every node's own mass) is the central
+// differences' conserved one less 1/2 m_s (sum w_j v_j^2 - (sum w_j v_j)^2) per slave: nothing
+// while the segment moves as a whole, a trace where it deforms.
+
+#include <vector>
+
+#include "plyform/core/model.hpp"
+#include "plyform/engine/nodal_state.hpp"
+
+namespace plyform::engine {
+
+class TiedNodes {
+ public:
+  explicit TiedNodes(const core::Model& model);
+
+  [[nodiscard]] bool empty() const { return slave_.empty(); }
+
+  /// The effective masses and rotary inertias of the update: the slaves' moved onto their
+  /// segments' nodes (inverse 0 for a slave: the update leaves it for follow()).
+  void lump(const std::vector<double>& mass, const std::vector<double>& inertia,
+            std::vector<double>& inv_mass, std::vector<double>& inv_inertia) const;
+
+  /// Before the velocity update: each slave's net force (e - f) and, with rotations, its
+  /// moment and the force's moment about the surface point, onto its segment's nodes' internal
+  /// force arrays (the slave's own are zeroed; its external load stays where the engine books
+  /// its work).
+  void gather(NodalState& s) const;
+
+  /// After the update (constraints, rigid bodies and walls done): the slaves' velocities (and
+  /// rotations) from their segments'. Returns the correction of the next half step's external
+  /// work rate, sum (v_s - v_free) . e_s.
+  double follow(NodalState& s) const;
+
+ private:
+  struct Link {
+    core::Index slave = 0;
+    core::Index node[4] = {0, 0, 0, 0};
+    double w[4] = {0, 0, 0, 0};
+    bool rotations = false;
+  };
+  const core::Model& model_;
+  std::vector<Link> slave_;
+};
+
+}  // namespace plyform::engine
