@@ -546,8 +546,13 @@ Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, bool fre
     // approaching node that pressed in at all turned to the other side before the law could
     // push it back, and a rigid cylinder went through a rubber block untouched. There a node
     // changes side only once it is deeper than half the search margin.
+    // A node that takes another segment is as much behind it only if it is on its other side:
+    // the side that last cycle's contact normal gave it (a segment of another part, met while
+    // the node lay in the plane of a first one) would read as a penetration of the whole
+    // distance between them, and the penalty would fire it through (the crush box deck's
+    // coplanar flanges: 14 mm deep in one cycle, 9 kJ in the next).
     const double through = offsets > 0.0 ? 2.0 * offsets : 0.5 * pr.margin;
-    if (!(free && L.side * L.sp.distance < -through))
+    if (!((free || s != pr.seg[k]) && L.side * L.sp.distance < -through))
       return L;
     L.side = static_cast<signed char>(-L.side);
     project_surface(pr, k, s, packed, guess, nullptr, L);
@@ -1173,9 +1178,17 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // LS-DYNA does with IGNORE = 0.
     const double g = L.side * L.sp.distance;
     double& tol = pr.arrival_depth[k];
-    const double push = 0.01 * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
-    if (!was_located && pr.measured && g < -push)
-      tol = g + push;
+    const double band = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
+    const double push = 0.01 * band;
+    // A located node arrives too when its depth jumps by half the band or more in one cycle,
+    // which no motion does: it took another surface's segment (an intersecting part) whose
+    // band it was inside already, or its segment turned over (a crushed fold's quadrilateral
+    // flips its normal); the penalty would fire the node out (the crush box deck: 1.3 mm deep
+    // at once, 150 mm/ms; a segment flipped under a node 9 mm above it, 12 mm deep, 17 kJ).
+    const double g_before = pr.gap[k] + tol;
+    const bool jumped = was_located && band > 0.0 && g < g_before - 0.5 * band;
+    if (((!was_located && pr.measured) || jumped) && g < -push)
+      tol = std::min(tol, g + push);
     else if (tol < 0.0 && g > tol)
       tol = g < 0.0 ? g : 0.0;
     pr.gap[k] = g - tol;
@@ -1341,8 +1354,9 @@ void track_initial_penetrations(PassRuntime& pr, const double* packed, const cor
   if (count > 0) {
     std::ostringstream os;
     os << pr.iface->keyword << " " << pr.iface->id << ": " << count
-       << " slave nodes penetrate at t = 0 (deepest " << -deepest << "): tracked (IGNORE "
-       << pr.iface->ignore
+       << " slave nodes penetrate at t = 0 (deepest " << -deepest << "): tracked ("
+       << (pr.iface->ignore == 0 ? std::string("IGNORE 0 could not move them clear")
+                                 : "IGNORE " + std::to_string(pr.iface->ignore))
        << "), the penalty acts only beyond that depth, which shrinks as they come out";
     if (listed < count && pr.iface->ignore == 2)
       os << " (" << listed << " listed)";
@@ -1350,7 +1364,7 @@ void track_initial_penetrations(PassRuntime& pr, const double* packed, const cor
   }
 }
 
-void ContactSet::start(const double* packed) {
+void ContactSet::start(const double* packed, bool track_leftovers) {
   for (auto& pp : passes_) {
     PassRuntime& pr = *pp;
     init_nodal_normals(pr, packed);
@@ -1358,7 +1372,12 @@ void ContactSet::start(const double* packed) {
     ++searches_;
     const std::size_t ns = pr.pass->slave_count();
     measure(pr, 0.0, packed, nullptr, mass_, rigid_, rot_);
-    if (pr.iface->ignore > 0)
+    // IGNORE 0: setup moved the penetrating nodes out (setup::build_contacts); what it could
+    // not clear (coplanar flanges of two parts, each moved into the other's band) is tracked
+    // as IGNORE 1 does: pushed out, it gave the model energy from nowhere (the crush box deck:
+    // 18 nodes, 156 J at once). A cohesive or tiebreak interface bonds instead.
+    if (pr.iface->ignore > 0 || (track_leftovers && pr.iface->leftovers_tracked &&
+                                 !pr.iface->cohesive && !pr.iface->tiebreak.enabled()))
       track_initial_penetrations(pr, packed, model_, warnings_);
     pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
     if (pr.iface->tiebreak.enabled())

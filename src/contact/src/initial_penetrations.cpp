@@ -32,7 +32,7 @@ std::vector<InitialPenetration> initial_penetrations(const core::Model& model) {
     packed[6 * i + 1] = model.y0[i];
     packed[6 * i + 2] = model.z0[i];
   }
-  contacts.start(packed.data());
+  contacts.start(packed.data(), false);
   std::vector<InitialPenetration> all;
   contacts.initial_penetrations(all);
   std::unordered_map<core::Index, std::size_t> deepest;

@@ -820,6 +820,9 @@ void remove_initial_penetrations(const model::ModelDesc& desc, core::Model& mode
                          {},   {}};
     again.build();
   }
+  // What the rounds could not clear is tracked at the start (core::ContactInterface).
+  for (core::ContactInterface& c : model.contacts)
+    c.leftovers_tracked = c.ignore == 0;
   // The interfaces in the model's order: the deck's contacts less the tied ones.
   std::vector<const model::ContactDesc*> interfaces;
   for (const model::ContactDesc& cd : desc.contacts)

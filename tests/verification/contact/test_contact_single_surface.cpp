@@ -244,5 +244,31 @@ TEST(ContactInitialPenetration, Ignore1TracksThePenetrationAndActsBeyondIt) {
   EXPECT_NEAR(last.stored + last.damping, last.work, 0.02 * last.work);
 }
 
+// Two plates of two parts meshed in one plane and overlapping (a lap joint drawn coplanar, as
+// the crush box deck of ../shared/decks/real has its flanges): every node of the overlap lies in
+// the other part's band, penetrating by half the two thicknesses, and no move clears it (each
+// plate's nodes are moved into the other's band). Nothing loads the model: it must stay at
+// rest, whatever IGNORE says. The penalty used to fire such nodes out (IGNORE 0: what setup
+// could not move clear), or a node that took a segment of the other plate's far edge read the
+// distance to it as depth (9 kJ within three cycles in the crush box).
+TEST(ContactInitialPenetration, CoplanarOverlappingPlatesStayAtRest) {
+  for (const int ignore : {0, 1}) {
+    SCOPED_TRACE(ignore);
+    test::DeckWriter d;
+    d.kw("*CONTROL_CONTACT").card(0.1).card("").card("").card(ignore);
+    common(d, 2e-5, 2);
+    d.plate(1, 1, 1, 0.0, 20.0, 0.0, 10.0, 4, 2, 0.0);
+    d.plate(2, 1001, 1001, 12.0, 30.0, 0.0, 10.0, 3, 3, 0.0);
+    d.kw("*CONTACT_AUTOMATIC_SINGLE_SURFACE").card(0, 0, 0, 0);
+    test::DeckRun r;
+    test::run_deck(d.text(), r);
+    ASSERT_FALSE(r.sink.energies.empty());
+    for (const auto& e : r.sink.energies) {
+      EXPECT_LT(e.kinetic, 1e-12) << "t = " << e.time;
+      EXPECT_GT(e.contact, -1e-12) << "t = " << e.time;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace plyform

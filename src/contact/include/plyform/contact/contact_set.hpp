@@ -112,7 +112,9 @@ class ContactSet {
 
   /// t = 0: the first search, then initially bonded nodes (BOND_TOL) bond. `packed`: x y z vx
   /// vy vz per node.
-  void start(const double* packed);
+  /// `track_leftovers`: IGNORE 0's penetrations that setup could not move clear are tracked
+  /// (as IGNORE 1); false where start() only measures them (contact::initial_penetrations).
+  void start(const double* packed, bool track_leftovers = true);
 
   /// One cycle: positions of t (and velocities of the step dt just taken) in `packed`, nodal
   /// temperatures (null: 0). The contact forces are subtracted from the internal-force arrays

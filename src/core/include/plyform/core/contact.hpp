@@ -155,6 +155,9 @@ struct ContactInterface {
   /// beyond the depth at t = 0 only, the depth shrinking as the node comes out), 2 as 1 with
   /// each node listed in the warnings.
   int ignore = 0;
+  /// Setup moved this interface's initial penetrations out (IGNORE 0,
+  /// setup::build_contacts): what it could not clear is tracked at the start, as IGNORE 1.
+  bool leftovers_tracked = false;
   ContactHeat heat;     ///< the _THERMAL option
   law::Parameters law;  ///< the interface law (cohesive, or penalty-Coulomb)
 };
