@@ -295,6 +295,12 @@ void print_mesh(const model::ModelDesc& desc, const core::Model& m, std::ostream
                "normal N1 -> N2 -> N3)\n",
                m.pressure_loads.size(), m.pressure_segments.size());
   }
+  // What the build made of each tied contact (the deck's contacts list names them above).
+  for (const core::TiedInterface& t : m.tied) {
+    fmt::print(out, "tied contact {} {}: {} slave nodes tied{}\n",
+               t.id != 0 ? std::to_string(t.id) : std::string("(no CID)"), t.keyword,
+               t.slaves.size(), t.rotations ? ", with their rotations" : "");
+  }
   for (const core::RigidWall& w : m.rigid_walls) {
     const std::string friction = w.friction == 0.0   ? "frictionless"
                                  : w.friction >= 1.0 ? "no sliding"
