@@ -207,19 +207,27 @@ using NodeLanes = double[8][kLanes];
 // V^(2/3) ~ V sqrt(2 sum|b|^2 / 3) for the viscous form, V^(1/3) ~ (2/3) V sum|b|^2 for the
 // stiffness form. `scale` is QM rho c (viscous) or QM (K + 4/3 G) (stiffness).
 // Bulk viscosity (LS-DYNA's form): in compression, tr D < 0, the pressure
-// q = rho l |tr D| (Q1 l |tr D| + Q2 c) = rho l Q |tr D| with l = V^(1/3), the element's
-// viscous velocity Q = Q1 l |tr D| + Q2 c, and the stable step L / (Q + sqrt(Q^2 + c^2)) (L the
-// step's characteristic length). Nothing in expansion. It smears a shock over a few elements
+// q = rho l |tr D| (Q1 l |tr D| + Q2 c) = rho l Q |tr D| with l = V^(1/3) (bulk_length), the
+// element's viscous velocity Q = Q1 l |tr D| + Q2 c, and the stable step L / (Q + sqrt(Q^2 + c^2))
+// (L the step's characteristic length). Nothing in expansion. It smears a shock over a few elements
 // and damps the ringing behind it; its work, q |tr D| V dt, is booked as internal energy.
 struct BulkQ {
   double q = 0.0;   // pressure [stress]
   double qv = 0.0;  // viscous velocity Q [length/time]
 };
-inline BulkQ bulk_viscosity(const core::BulkViscosity& b, double rho, double c, double volume,
+// The length l: LS-DYNA's V^(1/3), but never more than sqrt(3) times the step's characteristic
+// length L (equal for a cube, L = h / sqrt(3)): in a flat element (10 x 10 x 0.5 mm) V^(1/3) is
+// 7 times its thickness, the viscous stress then damps the element's thickness mode 7 times more
+// than the step L / (Q + sqrt(Q^2 + c^2)) allows for, and a free bar of such elements went
+// unstable (tests/verification/solid/test_bulk_viscosity.cpp).
+inline double bulk_length(double volume, double step_length) {
+  return std::min(std::cbrt(volume), std::sqrt(3.0) * step_length);
+}
+inline BulkQ bulk_viscosity(const core::BulkViscosity& b, double rho, double c, double l,
                             double trace) {
   if (!(trace < 0.0) || (b.q1 == 0.0 && b.q2 == 0.0))
     return {};
-  const double l = std::cbrt(volume), rate = -trace;
+  const double rate = -trace;
   const double qv = b.q1 * l * rate + b.q2 * c;
   return {rho * l * qv * rate, qv};
 }
@@ -419,7 +427,9 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
     }
     if (bulk_on) {
       for (std::size_t k = 0; k < n; ++k) {
-        const BulkQ b = bulk_viscosity(bv, rho, c_wave, vol[k], s.d[0][k] + s.d[1][k] + s.d[2][k]);
+        const BulkQ b =
+            bulk_viscosity(bv, rho, c_wave, bulk_length(vol[k], 1.0 / std::sqrt(2.0 * bsq[k])),
+                           s.d[0][k] + s.d[1][k] + s.d[2][k]);
         if (b.qv > 0.0) {
           bulk_q[k] = b.q;
           dte[k] = 1.0 / (std::sqrt(2.0 * bsq[k]) * (b.qv + std::sqrt(b.qv * b.qv + c2)));
@@ -611,7 +621,8 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         }
       }
       const BulkQ b =
-          bulk_viscosity(block.bulk_viscosity, mat.density, c_wave, mean[k].volume, mean_trace);
+          bulk_viscosity(block.bulk_viscosity, mat.density, c_wave,
+                         bulk_length(mean[k].volume, characteristic_length(mean[k])), mean_trace);
       bulk_q[k] = b.q;
       bulk_trace[k] = mean_trace;
       const double dte = st.dt_factor[e] * characteristic_length(mean[k]) /

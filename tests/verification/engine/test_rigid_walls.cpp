@@ -23,9 +23,9 @@ constexpr double kE = 210000.0, kRho = 7.85e-9;  // steel: MPa, t/mm^3 (mm, s, N
 
 /// A bar of n hexahedra along z, a x a across, from z0 to z0 + length, part 1 (nu = 0: the
 /// 1-D wave speed sqrt(E / rho)). Without bulk viscosity: it smears the impact's front over a
-/// few elements (the bar released early, 2.3 % of the rebound's impulse at 50 elements), which
+/// few elements (the bar released early, 1.8 % of the rebound's impulse at 50 elements), which
 /// is its job, not the wall's; and its work, booked on the step's mid-point rate, lags the
-/// first impacts of a moving wall by 7 % (docs/energy.md).
+/// first impacts of a moving wall by 5 % (docs/energy.md).
 void bar(DeckWriter& w, double a, double z0, double length, int n) {
   w.kw("*CONTROL_BULK_VISCOSITY").card(0.0, 0.0);
   w.kw("*PART").card("bar").card(1, 1, 1);
