@@ -186,5 +186,25 @@ TEST(ValidateContact, ReachedThroughValidate) {
   EXPECT_EQ(errors[1].field, "NID");
 }
 
+// A tied contact is a constraint: the friction and penalty fields it reads are warned about by
+// name (not passed over in silence); its defaults draw no warning.
+TEST(TiedContactCards, FieldsATieCannotUseAreWarnedAboutByName) {
+  const std::string mesh =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0.5,0.5,0.1\n*SET_NODE_LIST\n1\n5\n";
+  const keyword::ReadResult plain =
+      keyword::read_deck_text(mesh + "*CONTACT_TIED_NODES_TO_SURFACE_OFFSET\n1,1,4,3\n", "deck.k");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_TRUE(plain.warnings.empty());
+  ASSERT_EQ(plain.model.contacts.size(), 1u);
+  EXPECT_TRUE(plain.model.contacts[0].offset);
+  const keyword::ReadResult given = keyword::read_deck_text(
+      mesh + "*CONTACT_TIED_NODES_TO_SURFACE\n1,1,4,3\n0.3,0.2\n2.0\n", "deck.k");
+  ASSERT_TRUE(given.ok());
+  std::string fields;
+  for (const auto& w : given.warnings)
+    fields += w.field + " ";
+  EXPECT_EQ(fields, "FS FD SFS ");
+}
+
 }  // namespace
 }  // namespace plyform::setup

@@ -822,7 +822,21 @@ constexpr std::array<std::string_view, 6> kTiedOptions{"",       "ID",        "T
 
 void read_tied(KeywordInput& in, model::ContactKind kind) {
   read_contact(in, kind);
-  in.model().contacts.back().offset = in.option().starts_with("OFFSET");
+  model::ContactDesc& c = in.model().contacts.back();
+  c.offset = in.option().starts_with("OFFSET");
+  // A tie is a constraint: friction, damping and penalty scales have nothing to act on.
+  const std::pair<const char*, bool> unused[] = {
+      {"FS", c.fs != 0.0},   {"FD", c.fd != 0.0},   {"DC", c.dc != 0.0},
+      {"VC", c.vc != 0.0},   {"VDC", c.vdc != 0.0}, {"SFS", c.sfs != 1.0},
+      {"SFM", c.sfm != 1.0}, {"SOFT", c.soft != 0}, {"IGNORE", c.ignore != 0}};
+  for (const auto& [field, given] : unused) {
+    if (given) {
+      in.warn(c.card1.line, field,
+              fmt::format("{} has no use in a tied contact (a constraint: no friction, damping "
+                          "or penalty): passed over",
+                          field));
+    }
+  }
 }
 
 }  // namespace
