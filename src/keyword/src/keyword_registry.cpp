@@ -43,6 +43,10 @@ KeywordSpec mat_plastic_kinematic_keyword();
 KeywordSpec mat_003_keyword();
 KeywordSpec mat_transversely_anisotropic_keyword();
 KeywordSpec mat_037_keyword();
+KeywordSpec mat_3_parameter_barlat_keyword();
+KeywordSpec mat_036_keyword();
+KeywordSpec mat_hill_3r_keyword();
+KeywordSpec mat_122_keyword();
 KeywordSpec mat_mooney_rivlin_keyword();
 KeywordSpec mat_027_keyword();
 KeywordSpec mat_add_thermal_expansion_keyword();
@@ -166,6 +170,10 @@ std::span<const KeywordSpec> keyword_registry() {
       mat_003_keyword(),
       mat_transversely_anisotropic_keyword(),
       mat_037_keyword(),
+      mat_3_parameter_barlat_keyword(),
+      mat_036_keyword(),
+      mat_hill_3r_keyword(),
+      mat_122_keyword(),
       mat_mooney_rivlin_keyword(),
       mat_027_keyword(),
       mat_add_thermal_expansion_keyword(),

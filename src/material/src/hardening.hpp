@@ -106,6 +106,35 @@ struct PowerHardening {
   [[nodiscard]] double slope(double e) const { return n * k * std::pow(e0 + e, n - 1.0); }
 };
 
+/// sigma_y = a - b exp(-c eps_p) (Voce).
+struct VoceHardening {
+  double a;
+  double b;
+  double c;
+  [[nodiscard]] double value(double e) const { return a - b * std::exp(-c * e); }
+  [[nodiscard]] double slope(double e) const { return b * c * std::exp(-c * e); }
+};
+
+/// Calls f with the hardening rule HR of the sheet-metal laws (*MAT_036, *MAT_122).
+template <class F>
+decltype(auto) with_hardening(const core::SheetHardening& m, F&& f) {
+  using Rule = core::SheetHardening::Rule;
+  switch (m.rule) {
+    case Rule::kSwift:
+      return f(PowerHardening{m.k, m.n, m.e0});
+    case Rule::kCurve: {
+      const auto& c = m.curve;
+      return f(TabulatedHardening{c.plastic_strain.data(), c.yield_stress.data(),
+                                  std::min(c.plastic_strain.size(), c.yield_stress.size())});
+    }
+    case Rule::kVoce:
+      return f(VoceHardening{m.a, m.b, m.c});
+    case Rule::kLinear:
+      break;
+  }
+  return f(LinearHardening{m.sigy, m.hp});
+}
+
 /// Calls f with the hardening of *MAT_024: the curve when it has points, else bilinear with
 /// E_p = E ETAN / (E - ETAN). The block's law is chosen here, once.
 template <class F>

@@ -1,5 +1,8 @@
 #include "plyform/material/law_registry.hpp"
 
+#include <string_view>
+#include <vector>
+
 namespace plyform::material {
 
 std::optional<core::Material> material_from_deck(const model::ModelDesc& deck, int id,
@@ -56,6 +59,22 @@ bool law_reads_temperature(const core::Material& m) {
 
 std::size_t history_per_point(const core::Material& m) {
   return visit_law(m, [](auto tag, const auto&) { return decltype(tag)::type::history.size(); });
+}
+
+std::string law_keywords(bool solids) {
+  std::vector<std::string_view> names;
+  for_each_law([&](auto tag) {
+    using Law = typename decltype(tag)::type;
+    if (solids ? Law::for_solids : Law::for_shells)
+      names.push_back(Law::info.keyword);
+  });
+  names.push_back("*MAT_RIGID");  // a rigid part takes either element
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    out += i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ");
+    out += names[i];
+  }
+  return out;
 }
 
 }  // namespace plyform::material

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hardening.hpp"
+#include "plane_stress_trial.hpp"
 #include "plyform/material/strain_rate.hpp"
 
 namespace plyform::material {
@@ -91,29 +92,6 @@ void solid_update(const core::PlasticKinematic& m, std::size_t n, ConstSymView d
   }
 }
 
-// ---------------------------------------------------------------------------------------------
-// Plane-stress returns. The isotropic plane-stress elastic step (shell.cpp's, repeated here:
-// it is private there):
-//   d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy likewise, d sxy = 2 G dxy, transverse shear
-//   2 G, dzz = -nu/(1 - nu)(dxx + dyy).
-// ---------------------------------------------------------------------------------------------
-namespace {
-
-void plane_stress_trial(double young, double nu, std::size_t n, const ShellPoints& s) {
-  const double c11 = young / (1.0 - nu * nu), c12 = nu * c11, two_g = young / (1.0 + nu);
-  const double nu_zz = nu / (1.0 - nu);
-  for (std::size_t p = 0; p < n; ++p) {
-    s.sxx[p] += c11 * s.dxx[p] + c12 * s.dyy[p];
-    s.syy[p] += c12 * s.dxx[p] + c11 * s.dyy[p];
-    s.sxy[p] += two_g * s.dxy[p];
-    s.syz[p] += two_g * s.dyz[p];
-    s.szx[p] += two_g * s.dzx[p];
-    s.dzz[p] = -nu_zz * (s.dxx[p] + s.dyy[p]);
-  }
-}
-
-}  // namespace
-
 // *MAT_003, shells. The deviatoric back stress alpha has alpha_zz = -(alpha_xx + alpha_yy) != 0
 // while sigma_zz = 0, so xi = dev(sigma) - alpha = dev(sigma - alpha); shifting sigma - alpha
 // by its zz component (a hydrostatic shift, which dev ignores) gives xi = dev(eta) with
@@ -131,7 +109,7 @@ void plane_stress_trial(double young, double nu, std::size_t n, const ShellPoint
 // round-off by the same scalar Newton.
 void shell_update(const core::PlasticKinematic& m, std::size_t n, const ShellPoints& pts,
                   double dt) {
-  plane_stress_trial(m.young, m.poisson, n, pts);
+  detail::plane_stress_trial(m.young, m.poisson, n, pts);
   const double nu = m.poisson;
   const double a = 0.5 * m.young / (1.0 - nu), b = 1.5 * m.young / (1.0 + nu);
   const double nu_e = nu / m.young;
@@ -199,7 +177,7 @@ decltype(auto) with_hardening(const core::TransverselyAnisotropicPlastic& m, F&&
   const std::size_t n = std::min(c.plastic_strain.size(), c.yield_stress.size());
   if (n > 0)
     return f(detail::TabulatedHardening{c.plastic_strain.data(), c.yield_stress.data(), n});
-  return f(detail::LinearHardening{m.sigy, plastic_modulus(m.young, m.etan)});
+  return f(detail::LinearHardening{m.sigy, m.etan});  // ETAN: the plastic modulus
 }
 
 template <class H>
@@ -238,7 +216,7 @@ double yield_stress(const core::TransverselyAnisotropicPlastic& m, double eps_p)
 
 void shell_update(const core::TransverselyAnisotropicPlastic& m, std::size_t n,
                   const ShellPoints& pts) {
-  plane_stress_trial(m.young, m.poisson, n, pts);
+  detail::plane_stress_trial(m.young, m.poisson, n, pts);
   with_hardening(m, [&](const auto& h) {
     hill_return_kernel(h, m.young, m.poisson, m.r, n, pts.sxx, pts.syy, pts.sxy, pts.eps_p,
                        pts.dzz);

@@ -176,12 +176,9 @@ struct Builder {
       const auto part_index = static_cast<Index>(m.parts.size() - 1);
       if (solid != solid_sections.end()) {
         if (!rigid && !element::supports_solids(law)) {
-          error(
-              p.where, "*PART", "MID",
-              "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
-                  " is not a law for solid elements (use *MAT_ELASTIC, *MAT_MOONEY-RIVLIN_RUBBER, "
-                  "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
-                  "*MAT_PLASTIC_KINEMATIC, *MAT_ELASTIC_PLASTIC_THERMAL or *MAT_RIGID)");
+          error(p.where, "*PART", "MID",
+                "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
+                    " is not a law for solid elements (use " + material::law_keywords(true) + ")");
           continue;
         }
         core::SolidBlock b;
@@ -206,11 +203,7 @@ struct Builder {
         if (!rigid && !element::supports_shells(law)) {
           error(p.where, "*PART", "MID",
                 "part " + std::to_string(p.id) + ": material " + std::to_string(p.material_id) +
-                    " is not a law for shells (use *MAT_ELASTIC, *MAT_ORTHOTROPIC_ELASTIC, "
-                    "*MAT_PIECEWISE_LINEAR_PLASTICITY, *MAT_POWER_LAW_PLASTICITY, "
-                    "*MAT_PLASTIC_KINEMATIC, *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC, "
-                    "*MAT_ELASTIC_PLASTIC_THERMAL, *MAT_REINFORCED_THERMOPLASTIC or "
-                    "*MAT_RIGID)");
+                    " is not a law for shells (use " + material::law_keywords(false) + ")");
           continue;
         }
         if (sec.nip < 1 || sec.nip > 5) {

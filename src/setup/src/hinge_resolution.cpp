@@ -62,7 +62,9 @@ bool is_plastic(const core::Material& m) {
          std::holds_alternative<core::PowerLawPlasticity>(m) ||
          std::holds_alternative<core::PlasticKinematic>(m) ||
          std::holds_alternative<core::ElasticPlasticThermal>(m) ||
-         std::holds_alternative<core::TransverselyAnisotropicPlastic>(m);
+         std::holds_alternative<core::TransverselyAnisotropicPlastic>(m) ||
+         std::holds_alternative<core::Barlat89Plastic>(m) ||
+         std::holds_alternative<core::Hill3RPlastic>(m);
 }
 
 // The median over the part's elements of their extent across the hinge line: along the

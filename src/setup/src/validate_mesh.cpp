@@ -208,6 +208,8 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
   add_materials(model.plastic_kinematic_materials, "*MAT_PLASTIC_KINEMATIC");
   add_materials(model.transversely_anisotropic_materials,
                 "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC");
+  add_materials(model.barlat89_materials, "*MAT_3-PARAMETER_BARLAT");
+  add_materials(model.hill_3r_materials, "*MAT_HILL_3R");
   add_in_deck_order(materials, std::move(material_definitions), model, "MID", errors);
   IdTable rigid_materials("rigid material", "*MAT_RIGID");
   for (const model::MatRigidDesc& m : model.rigid_materials) {
@@ -351,29 +353,41 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
     }
   }
 
-  // The return of *MAT_037 brackets its plastic multiplier with a yield stress that is
-  // positive and does not soften, as the hardening curve of a sheet metal is.
-  for (const model::MatTransverselyAnisotropicDesc& m : model.transversely_anisotropic_materials) {
-    if (m.hlcid == 0)
-      continue;
+  // The returns of the sheet-metal laws bracket their plastic multiplier with a yield stress
+  // that is positive and does not soften, as the hardening curve of a sheet metal is.
+  const auto check_curve = [&](const model::SourceLocation& where, std::string_view keyword,
+                               std::string_view field, int mid, int curve_id) {
     const auto c = std::find_if(model.curves.begin(), model.curves.end(),
-                                [&](const model::CurveDesc& x) { return x.id == m.hlcid; });
+                                [&](const model::CurveDesc& x) { return x.id == curve_id; });
     if (c == model.curves.end()) {
-      errors.push_back({m.where, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "HLCID",
-                        cat("material ", m.id, ": curve ", m.hlcid,
+      errors.push_back({where, std::string(keyword), std::string(field),
+                        cat("material ", mid, ": curve ", curve_id,
                             " is not defined (no *DEFINE_CURVE with this id)")});
-      continue;
+      return;
     }
     const std::vector<model::CurvePoint> points = model::effective_points(*c);
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (!(points[i].y > 0.0) || (i > 0 && points[i].y < points[i - 1].y)) {
         errors.push_back(
-            {m.where, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", "HLCID",
-             cat("material ", m.id, ": the yield stresses of curve ", m.hlcid,
+            {where, std::string(keyword), std::string(field),
+             cat("material ", mid, ": the yield stresses of curve ", curve_id,
                  " must be > 0 and must not decrease (point ", i + 1, " is ", points[i].y, ")")});
         break;
       }
     }
+  };
+  for (const model::MatTransverselyAnisotropicDesc& m : model.transversely_anisotropic_materials) {
+    const std::string_view keyword = "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC";
+    if (m.hlcid != 0)
+      check_curve(m.where, keyword, "HLCID", m.id, m.hlcid);
+  }
+  for (const model::MatBarlat89Desc& m : model.barlat89_materials) {
+    if (m.hardening.hr == 3)
+      check_curve(m.where, "*MAT_3-PARAMETER_BARLAT", "LCID", m.id, m.hardening.lcid);
+  }
+  for (const model::MatHill3RDesc& m : model.hill_3r_materials) {
+    if (m.hardening.hr == 3)
+      check_curve(m.where, "*MAT_HILL_3R", "LCID", m.id, m.hardening.lcid);
   }
 
   // Sets -> nodes, parts.

@@ -30,6 +30,8 @@ TEST(LawRegistry, EveryMaterialHasItsKeywordAndNumber) {
       {core::PlasticKinematic{}, "*MAT_PLASTIC_KINEMATIC", 3, true, true, 6},
       {core::TransverselyAnisotropicPlastic{}, "*MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC", 37,
        false, true, 0},
+      {core::Barlat89Plastic{}, "*MAT_3-PARAMETER_BARLAT", 36, false, true, 0},
+      {core::Hill3RPlastic{}, "*MAT_HILL_3R", 122, false, true, 0},
   };
   std::set<std::string> keywords;
   for (const auto& c : cases) {
@@ -55,6 +57,18 @@ TEST(LawRegistry, IsotropicModuliAreTheClosedForms) {
   EXPECT_DOUBLE_EQ(material::bulk_modulus(steel), 210000.0 / (3.0 * (1.0 - 0.6)));
   EXPECT_DOUBLE_EQ(material::shear_modulus(steel), 210000.0 / 2.6);
   EXPECT_DOUBLE_EQ(material::density(steel), 7.85e-9);
+}
+
+// The messages that say which laws a part may use list the registry's laws for the element.
+TEST(LawRegistry, LawKeywordsForSolidsAndShells) {
+  const std::string solids = material::law_keywords(true);
+  const std::string shells = material::law_keywords(false);
+  EXPECT_NE(solids.find("*MAT_MOONEY-RIVLIN_RUBBER"), std::string::npos) << solids;
+  EXPECT_EQ(solids.find("*MAT_HILL_3R"), std::string::npos) << solids;
+  EXPECT_NE(shells.find("*MAT_3-PARAMETER_BARLAT"), std::string::npos) << shells;
+  EXPECT_NE(shells.find("*MAT_HILL_3R"), std::string::npos) << shells;
+  EXPECT_EQ(shells.find("*MAT_MOONEY-RIVLIN_RUBBER"), std::string::npos) << shells;
+  EXPECT_TRUE(shells.ends_with(" or *MAT_RIGID")) << shells;
 }
 
 }  // namespace

@@ -310,6 +310,7 @@ INSTANTIATE_TEST_SUITE_P(R, HillR, ::testing::Values(0.5, 1.0, 1.8, 2.6), [](con
 TEST(Hill, RIsOneReproducesJ2) {
   core::TransverselyAnisotropicPlastic h = hill(1.0);
   core::PiecewiseLinearPlasticity j2{7.85e-9, kE, kNu, kSigy, kEtan, {}};
+  h.etan = kE * kEtan / (kE - kEtan);  // *MAT_037's ETAN is the plastic modulus
   for (int curve = 0; curve < 2; ++curve) {
     if (curve == 1) {
       h.curve.plastic_strain = j2.curve.plastic_strain = {0.0, 0.01, 0.05, 0.2};

@@ -1,7 +1,7 @@
 // The metal plasticity keywords of real decks: *MAT_PLASTIC_KINEMATIC (*MAT_003) and
 // *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (*MAT_037), both with _TITLE. Every field is
 // read with LS-DYNA's meaning; what plyform does not implement (element erosion, the
-// viscoplastic rate formulation, R or E from curves, strain averaging) is an error naming the
+// viscoplastic rate formulation, E from curves, strain averaging) is an error naming the
 // field. Curves named are resolved when the model is built.
 #include <array>
 #include <cmath>
@@ -139,14 +139,16 @@ constexpr std::array kTaCard1Fields{
               .type = FieldType::kReal,
               .min_value = 0.0,
               .unit = "stress",
-              .description = "tangent modulus of the bilinear curve, 0 <= ETAN < E (ignored "
-                             "when HLCID is given)"},
+              .description = "plastic hardening modulus (this law's ETAN is the slope of the "
+                             "yield stress against plastic strain, not a tangent modulus), >= 0 "
+                             "(ignored when HLCID is given; < 0, LS-DYNA's normal-stress option, "
+                             "is not supported)"},
     FieldSpec{.name = "R",
               .type = FieldType::kReal,
               .unit = "-",
               .description = "normal anisotropy: the width-to-thickness plastic strain ratio "
-                             "in uniaxial tension, > 0 (LS-DYNA's meanings of a negative R are "
-                             "not supported)",
+                             "in uniaxial tension; < 0: the ratio |R| with LS-DYNA's stabilised "
+                             "return (plyform's return is exact for either sign)",
               .required = true},
     FieldSpec{.name = "HLCID",
               .type = FieldType::kInteger,
@@ -216,27 +218,16 @@ void read_mat_transversely_anisotropic(KeywordInput& in) {
   mat.where = in.where(line->line);
   require_positive(in, line->line, "RO", mat.density);
   require_positive(in, line->line, "E", mat.young);
-  if (mat.r < 0.0) {
-    in.fail(
-        line->line, "R",
-        fmt::format("R = {}: a Lankford ratio is positive, and LS-DYNA gives a negative R a "
-                    "meaning of its own{} that plyform does not implement; give the constant "
-                    "R > 0 (|R| if the deck means the ratio)",
-                    mat.r,
-                    mat.r == std::round(mat.r) ? " (R against plastic strain from curve -R)" : ""));
+  // LS-DYNA: R < 0 selects its stabilised return with the ratio |R|; plyform's return is the
+  // exact one for either sign, so it reads the ratio |R|.
+  if (mat.r == 0.0) {
+    in.fail(line->line, "R", "R = 0: give the Lankford ratio (R < 0 is read as |R|)");
   }
-  require_positive(in, line->line, "R", mat.r);
   if (mat.hlcid == 0) {
     if (!(mat.sigy > 0.0)) {
       in.fail(line->line, "SIGY",
               fmt::format("SIGY must be > 0 when HLCID does not give the yield stress, got {}",
                           mat.sigy));
-    }
-    if (!(mat.etan < mat.young)) {
-      in.fail(line->line, "ETAN",
-              fmt::format("ETAN = {} must be below E = {} (the plastic modulus E ETAN / (E - "
-                          "ETAN) must be finite)",
-                          mat.etan, mat.young));
     }
   }
   if (const auto line2 = in.next_line()) {
@@ -298,7 +289,8 @@ KeywordSpec mat_transversely_anisotropic_keyword() {
           .summary =
               "Shells: Hill's 1948 yield function with normal anisotropy R (material "
               "type 37), isotropic hardening from the curve HLCID or bilinear from SIGY "
-              "and ETAN. R from a curve (R < 0), E against strain (IDSCALE, EA, COE) "
+              "and the plastic modulus ETAN; R < 0 is read as |R| (LS-DYNA's "
+              "stabilised return of the same law). E against strain (IDSCALE, EA, COE) "
               "and strain averaging (STRAINLT) are errors; ICFLD is read with a warning "
               "(its output is not written). Also read as *MAT_037."};
 }

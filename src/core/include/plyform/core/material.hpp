@@ -166,8 +166,9 @@ struct PlasticKinematic {
 /// *MAT_TRANSVERSELY_ANISOTROPIC_ELASTIC_PLASTIC (037), shells: isotropic elasticity, Hill's
 /// 1948 yield function with normal anisotropy r (plane stress, in-plane isotropic):
 /// sigma_eq^2 = sxx^2 + syy^2 - 2r/(1 + r) sxx syy + 2(1 + 2r)/(1 + r) sxy^2, associated flow,
-/// isotropic hardening from `curve` when it has points, else SIGY + E_p eps_p with
-/// E_p = E ETAN / (E - ETAN). r = 1 is von Mises. Derivation: docs/materials.md.
+/// isotropic hardening from `curve` when it has points, else SIGY + ETAN eps_p (LS-DYNA's ETAN
+/// of this law is the plastic hardening modulus, not a tangent modulus). r = 1 is von Mises.
+/// Derivation: docs/materials.md.
 struct TransverselyAnisotropicPlastic {
   double density = 0.0;
   double young = 0.0;
@@ -178,10 +179,70 @@ struct TransverselyAnisotropicPlastic {
   HardeningCurve curve;
 };
 
+/// The hardening rules of the sheet-metal laws' HR field (*MAT_036, *MAT_122): the yield
+/// stress of the reference (rolling, 0 degree) direction against the effective plastic strain.
+struct SheetHardening {
+  enum class Rule {
+    kLinear = 1,  ///< HR 1: sigy + hp eps_p, hp = E ETAN / (E - ETAN) (P2 SIGY, P1 ETAN)
+    kSwift = 2,   ///< HR 2: k (e0 + eps_p)^n (P1 k, P2 n)
+    kCurve = 3,   ///< HR 3: the curve LCID
+    kVoce = 4,    ///< HR 4: a - b exp(-c eps_p) (P1 a, P2 b, P3 c)
+  };
+  Rule rule = Rule::kLinear;
+  double sigy = 0.0;
+  double hp = 0.0;
+  double k = 0.0;
+  double n = 0.0;
+  double e0 = 0.0;
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+  HardeningCurve curve;
+};
+
+/// Material axes of an orthotropic shell law (LS-DYNA's AOPT 0, 2, 3; see
+/// material::MaterialAxes).
+struct ShellAxes {
+  int aopt = 0;
+  double a[3] = {1.0, 0.0, 0.0};
+  double v[3] = {0.0, 0.0, 1.0};
+  double angle = 0.0;  ///< BETA, radians (AOPT 0 and 3)
+};
+
+/// *MAT_3-PARAMETER_BARLAT (036), shells: isotropic elasticity, the Barlat-Lian 1989 yield
+/// function in the material axes (a rolling, b transverse):
+/// 2 sigma_y^m = a |K1 + K2|^m + a |K1 - K2|^m + c |2 K2|^m, K1 = (s_aa + h s_bb) / 2,
+/// K2 = sqrt(((s_aa - h s_bb) / 2)^2 + p^2 s_ab^2), associated flow, isotropic hardening
+/// (SheetHardening), Cowper-Symonds scaling of the yield stress. Derivation: docs/materials.md.
+struct Barlat89Plastic {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  SheetHardening hardening;
+  double m = 8.0;
+  double a = 1.0, c = 1.0, h = 1.0, p = 1.0;
+  double rate_c = 0.0;  ///< Cowper-Symonds C (0: no rate effect)
+  double rate_p = 0.0;  ///< Cowper-Symonds P
+  ShellAxes axes;
+};
+
+/// *MAT_HILL_3R (122), shells: isotropic elasticity, Hill's 1948 yield function with the three
+/// Lankford ratios R00, R45, R90, in the material axes (plane stress, G + H = 1):
+/// sigma_y^2 = s_aa^2 - 2 H s_aa s_bb + (F + H) s_bb^2 + 2 N s_ab^2, H = R00 / (1 + R00),
+/// F = H / R90, N = (F + G)(R45 + 1/2); associated flow, isotropic hardening (SheetHardening).
+struct Hill3RPlastic {
+  double density = 0.0;
+  double young = 0.0;
+  double poisson = 0.0;
+  SheetHardening hardening;
+  double r00 = 1.0, r45 = 1.0, r90 = 1.0;
+  ShellAxes axes;
+};
+
 using Material = std::variant<ElasticMaterial, MooneyRivlinMaterial, PiecewiseLinearPlasticity,
                               PowerLawPlasticity, OrthotropicElasticMaterial, RigidMaterial,
                               ElasticPlasticThermal, ReinforcedThermoplastic, PlasticKinematic,
-                              TransverselyAnisotropicPlastic>;
+                              TransverselyAnisotropicPlastic, Barlat89Plastic, Hill3RPlastic>;
 
 // The law of each member (its kernel, moduli and name): material/law_registry.hpp.
 

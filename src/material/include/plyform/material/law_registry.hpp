@@ -6,12 +6,15 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <type_traits>
 #include <variant>
 
 #include "plyform/core/material.hpp"
+#include "plyform/material/laws/barlat89_plastic.hpp"
 #include "plyform/material/laws/elastic.hpp"
 #include "plyform/material/laws/elastic_plastic_thermal.hpp"
+#include "plyform/material/laws/hill_3r_plastic.hpp"
 #include "plyform/material/laws/mooney_rivlin.hpp"
 #include "plyform/material/laws/orthotropic_elastic.hpp"
 #include "plyform/material/laws/piecewise_linear_plasticity.hpp"
@@ -27,10 +30,10 @@ template <class... L>
 struct LawList {};
 
 /// The registry.
-using Laws =
-    LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
-            PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw,
-            ReinforcedThermoplasticLaw, PlasticKinematicLaw, TransverselyAnisotropicPlasticLaw>;
+using Laws = LawList<ElasticLaw, OrthotropicElasticLaw, PowerLawPlasticityLaw, RigidLaw,
+                     PiecewiseLinearPlasticityLaw, MooneyRivlinLaw, ElasticPlasticThermalLaw,
+                     ReinforcedThermoplasticLaw, PlasticKinematicLaw,
+                     TransverselyAnisotropicPlasticLaw, Barlat89PlasticLaw, Hill3RPlasticLaw>;
 
 namespace detail {
 template <class P, class List>
@@ -97,5 +100,8 @@ void for_each_law(F&& f) {
 [[nodiscard]] bool law_reads_temperature(const core::Material& m);
 /// Values of the law's own history per integration point (law::history.size()).
 [[nodiscard]] std::size_t history_per_point(const core::Material& m);
+/// The keywords of the laws for solids (or for shells), "*MAT_ELASTIC, ... or *MAT_RIGID", in
+/// the registry's order: for the messages that name what a part may use.
+[[nodiscard]] std::string law_keywords(bool solids);
 
 }  // namespace plyform::material

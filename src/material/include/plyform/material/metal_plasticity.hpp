@@ -47,7 +47,7 @@ void shell_update(const core::PlasticKinematic& m, std::size_t n, const ShellPoi
                   double dt);
 
 /// Yield stress of *MAT_037 at effective plastic strain eps_p: the curve (HLCID) when it has
-/// points, else SIGY + E_p eps_p with E_p = E ETAN / (E - ETAN).
+/// points, else SIGY + ETAN eps_p (ETAN this law's plastic hardening modulus).
 [[nodiscard]] double yield_stress(const core::TransverselyAnisotropicPlastic& m, double eps_p);
 
 /// *MAT_037 for shells: elastic plane-stress trial, then the plane-stress Hill return: in

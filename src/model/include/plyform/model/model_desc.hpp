@@ -67,6 +67,8 @@ struct ModelDesc {
   std::vector<MatReinforcedThermoplasticDesc> reinforced_thermoplastic_materials;
   std::vector<MatPlasticKinematicDesc> plastic_kinematic_materials;
   std::vector<MatTransverselyAnisotropicDesc> transversely_anisotropic_materials;
+  std::vector<MatBarlat89Desc> barlat89_materials;
+  std::vector<MatHill3RDesc> hill_3r_materials;
   std::vector<MatAddThermalExpansionDesc> thermal_expansions;
   std::vector<HourglassDesc> hourglasses;
   std::vector<SetListDesc> node_sets;

@@ -3,6 +3,8 @@
 // normal anisotropy R, isotropic hardening by ETAN or the curve HLCID; the exact plane-stress
 // return.
 
+#include <cmath>
+
 #include "plyform/material/laws/law_traits.hpp"
 #include "plyform/material/metal_plasticity.hpp"
 
@@ -28,7 +30,9 @@ struct TransverselyAnisotropicPlasticLaw {
     law.poisson = c.poisson;
     law.sigy = c.sigy;
     law.etan = c.etan;
-    law.r = c.r;
+    // LS-DYNA: R < 0 asks for its stabilised return with the ratio |R|; plyform's return is
+    // exact either way.
+    law.r = std::abs(c.r);
     if (c.hlcid != 0) {
       const core::LoadCurve& lc = curve(c.hlcid);
       law.curve.plastic_strain = lc.x;
