@@ -223,6 +223,15 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
     if (ply != nullptr)
       fibre_families_ = std::max(fibre_families_, ply->families);
   }
+  bool deformable_shells = false;
+  for (const core::ShellBlock& b : model.shell_blocks) {
+    deformable_shells =
+        deformable_shells ||
+        (b.size() > 0 && !std::holds_alternative<core::RigidMaterial>(
+                             model.materials[static_cast<std::size_t>(b.material)]));
+  }
+  if (deformable_shells)
+    formability_.emplace(model, cells);
   if (fibre_families_ > 0) {
     for (int i = 0; i < fibre_families_; ++i)
       fibre_[i].assign(3 * cells, std::numeric_limits<double>::quiet_NaN());
@@ -382,6 +391,18 @@ void ResultWriter::state(const engine::Snapshot& s) {
   if (fields.strain) {
     element_log_strains(model_, ns, *s.shells, strain_);
     piece.cell_data.push_back({"strain", 6, strain_});
+  }
+  if (formability_) {
+    formability_->compute(ns, *s.shells);
+    static constexpr const char* kMajor[3] = {"major_strain_bottom", "major_strain_middle",
+                                              "major_strain_top"};
+    static constexpr const char* kMinor[3] = {"minor_strain_bottom", "minor_strain_middle",
+                                              "minor_strain_top"};
+    for (int k : {2, 0, 1}) {
+      piece.cell_data.push_back({kMajor[k], 1, formability_->major[k]});
+      piece.cell_data.push_back({kMinor[k], 1, formability_->minor[k]});
+    }
+    piece.cell_data.push_back({"thinning", 1, formability_->thinning});
   }
   static constexpr const char* kFibre[3] = {"fibre_1", "fibre_2", "fibre_3"};
   for (int i = 0; i < fibre_families_; ++i)

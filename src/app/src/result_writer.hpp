@@ -15,6 +15,7 @@
 #include "plyform/output/csv_history.hpp"
 #include "plyform/output/progress_line.hpp"
 #include "plyform/output/vtu_series.hpp"
+#include "shell_formability.hpp"
 
 namespace plyform::app {
 
@@ -81,6 +82,8 @@ class ResultWriter : public engine::OutputSink {
   // and the shear angle between families 1 and 2 (degrees); NaN in other cells.
   int fibre_families_ = 0;  // the most families of any ply block (0: no ply, no arrays)
   std::vector<double> fibre_[3], shear_angle_;
+  // Deformable shells: their surfaces' principal strains and thinning (docs/outputs.md).
+  std::optional<ShellFormability> formability_;
   std::vector<output::NodoutRow> rows_;
   std::vector<output::RcforcRow> rcforc_rows_;
   std::vector<output::CohesiveRow> cohesive_rows_;
