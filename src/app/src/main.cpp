@@ -37,8 +37,41 @@ int main(int argc, char** argv) {
 
   std::filesystem::path plot_dir;
   CLI::App* plot = app.add_subcommand(
-      "plot", "PNG plots of the histories of a run (glstat, nodout, rcforc, cohesive)");
+      "plot",
+      "PNG plots of the histories of a run (glstat, nodout, rcforc, cohesive); with --fld the "
+      "forming-limit diagram and formability map of a state");
   plot->add_option("OUTDIR", plot_dir, "results folder of `plyform run`")->required();
+  plyform::app::FldOptions fld;
+  std::filesystem::path fld_curve;
+  double keeler_n = 0.0, keeler_t = 0.0;
+  int fld_state = 0;
+  bool plot_fld = false;
+  auto* fld_flag = plot->add_flag(
+      "--fld", plot_fld,
+      "draw the forming-limit diagram (fld.png), the formability map of the deformed "
+      "part (formability.png) and fld.csv from a state's shell strains, instead of the "
+      "histories; needs --flc or --keeler-n with --keeler-t");
+  auto* flc_opt = plot->add_option("--flc", fld_curve,
+                                   "forming-limit curve: a file of minor, major true strains, "
+                                   "one point per line, minor increasing (with --fld)");
+  auto* kn_opt = plot->add_option("--keeler-n", keeler_n,
+                                  "Keeler-Brazier FLC: strain-hardening exponent n (with --fld "
+                                  "and --keeler-t)");
+  auto* kt_opt = plot->add_option("--keeler-t", keeler_t,
+                                  "Keeler-Brazier FLC: sheet thickness in mm (with --fld and "
+                                  "--keeler-n)");
+  auto* state_opt = plot->add_option(
+      "--state", fld_state, "the state results_K.vtu to judge (default: the last; with --fld)");
+  auto* margin_opt = plot->add_option("--margin", fld.margin,
+                                      "safety margin below the FLC, in major true strain: risk "
+                                      "of cracks above FLC - margin (with --fld)")
+                         ->capture_default_str();
+  auto* low_opt = plot->add_option("--low-strain", fld.low_strain,
+                                   "low strain (insufficient stretch): both mid-surface "
+                                   "principal strains within +-S (with --fld)")
+                      ->capture_default_str();
+  for (auto* o : {flc_opt, kn_opt, kt_opt, state_opt, margin_opt, low_opt})
+    o->needs(fld_flag);
 
   plyform::app::LawOptions law;
   std::filesystem::path law_output;
@@ -109,6 +142,18 @@ int main(int argc, char** argv) {
   }
   if (check->parsed())
     return plyform::app::run_check(check_deck, std::cout, std::cerr);
+  if (plot->parsed() && plot_fld) {
+    fld.outdir = plot_dir;
+    if (*flc_opt)
+      fld.flc = fld_curve;
+    if (*kn_opt)
+      fld.keeler_n = keeler_n;
+    if (*kt_opt)
+      fld.keeler_t = keeler_t;
+    if (*state_opt)
+      fld.state = fld_state;
+    return plyform::app::run_fld_plot(fld, std::cout, std::cerr);
+  }
   if (plot->parsed())
     return plyform::app::run_plot(plot_dir, std::cout, std::cerr);
   if (law_cmd->parsed()) {

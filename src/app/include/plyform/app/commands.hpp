@@ -78,4 +78,21 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
 /// `err` when OUTDIR, the script or the interpreter is missing.
 int run_plot(const std::filesystem::path& outdir, std::ostream& out, std::ostream& err);
 
+struct FldOptions {
+  std::filesystem::path outdir;              ///< results folder of `plyform run`
+  std::optional<std::filesystem::path> flc;  ///< --flc: minor, major true strains per line
+  std::optional<double> keeler_n, keeler_t;  ///< --keeler-n, --keeler-t (t in mm)
+  std::optional<int> state;                  ///< --state K: results_K.vtu; none: the last
+  double margin = 0.1;                       ///< --margin: risk of cracks below the FLC
+  double low_strain = 0.02;                  ///< --low-strain: below it, low strain
+};
+
+/// `plyform plot OUTDIR --fld (--flc FILE | --keeler-n N --keeler-t T) [--state K]
+/// [--margin M] [--low-strain S]`: runs scripts/plot_fld.py (as run_plot runs its script),
+/// which writes fld.png (the forming-limit diagram), formability.png (the categories on the
+/// deformed part) and fld.csv into OUTDIR (docs/outputs.md, "Formability"). Returns 1 with a
+/// message naming the option on `err` when no curve or two are given, the curve file or
+/// OUTDIR is missing, else the script's exit status (1: no state, no shells, a bad curve).
+int run_fld_plot(const FldOptions& options, std::ostream& out, std::ostream& err);
+
 }  // namespace plyform::app
