@@ -83,9 +83,9 @@ void fit_curvature(const ShellCentre& self, int count, const double (*centres)[3
     rhs += row1 * e1.dot(dn) + row2 * e2.dot(dn);
   }
   // A direction no neighbour lies along (across a strip one element wide) leaves the system
-  // singular: a regularisation far below round-off of the data gives it no curvature rather
-  // than noise; one step of refinement takes the regularisation's 1e-12 back out of the
-  // directions the neighbours determine.
+  // singular: a regularisation of 1e-12 of its trace gives that direction no curvature rather
+  // than round-off noise, and one step of refinement takes the regularisation back out of the
+  // directions the neighbours determine (to 1e-24 of them).
   const double trace = normal_matrix.trace();
   Vector3d k = Vector3d::Zero();
   if (trace > 0.0) {
