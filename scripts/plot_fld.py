@@ -52,16 +52,23 @@ def fail(message, status=1):
 
 
 try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     import numpy as np
-    from matplotlib.collections import PolyCollection
-    from matplotlib.patches import Patch
 except ImportError as e:  # a Python without Debian's packages
-    fail(f"{sys.executable} cannot import {e.name}: install python3-matplotlib and "
-         "python3-numpy (scripts/install_deps.sh), and run with /usr/bin/python3")
+    fail(f"{sys.executable} cannot import {e.name}: install python3-numpy "
+         "(scripts/install_deps.sh), and run with /usr/bin/python3")
+
+
+def pyplot():
+    """matplotlib's pyplot, imported once the inputs are read (a bad call fails fast)."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as e:
+        fail(f"{sys.executable} cannot import {e.name}: install python3-matplotlib "
+             "(scripts/install_deps.sh), and run with /usr/bin/python3")
+    return plt
 
 
 class Flc:
@@ -168,12 +175,12 @@ FIELDS = ["major_strain_top", "minor_strain_top", "major_strain_bottom", "minor_
 
 
 def read_state(path):
-    try:
-        import vtk
-        from vtk.util.numpy_support import vtk_to_numpy
+    try:  # the reader alone: the whole vtk package takes three times as long to import
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
     except ImportError:
         fail(f"{sys.executable} cannot import vtk: install python3-vtk9 (scripts/install_deps.sh)")
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(path)
     reader.Update()
     grid = reader.GetOutput()
@@ -212,6 +219,9 @@ def classify(s, flc, margin, low):
 
 
 def plot_diagram(path, s, names, flc, margin, title):
+    plt = pyplot()
+    from matplotlib.patches import Patch
+
     fig, ax = plt.subplots(figsize=(10.0, 6.4), layout="constrained")
     minor = np.concatenate([s["minor_strain_top"], s["minor_strain_bottom"]])
     major = np.concatenate([s["major_strain_top"], s["major_strain_bottom"]])
@@ -269,6 +279,10 @@ def plot_diagram(path, s, names, flc, margin, title):
 
 
 def plot_map(path, points, shells, names, title):
+    plt = pyplot()
+    from matplotlib.collections import PolyCollection
+    from matplotlib.patches import Patch
+
     extent = np.ptp(points[np.concatenate(shells)], axis=0)
     order = np.argsort(extent)  # the thinnest extent first: look along it, then the next
     # A part with depth (over 5 % of its largest extent) is also seen from the side.

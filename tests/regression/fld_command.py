@@ -27,13 +27,12 @@ import shutil
 import subprocess
 import sys
 
-try:
-    import matplotlib  # noqa: F401
-    import numpy as np
-    import vtk  # noqa: F401
-except ImportError as e:
-    print(f"fld_command.py: skipped: {sys.executable} cannot import {e.name}")
+MISSING = [m for m in ("numpy", "matplotlib", "vtkmodules")
+           if importlib.util.find_spec(m) is None]
+if MISSING:
+    print(f"fld_command.py: skipped: {sys.executable} has no {', '.join(MISSING)}")
     sys.exit(77)
+import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(HERE, "..", "..", "scripts", "plot_fld.py")
