@@ -5,7 +5,7 @@ Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
                         [--dt2ms DT] [--elform 2|16] [--plain] [--slave skin|core] [--backup]
-                        [--name NAME]
+                        [--yield j2|barlat|hill] [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -24,6 +24,9 @@ tool meshes are the tools' surfaces). --n N: elements along the quarter blank's 
 core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/s).
 --dt2ms DT: mass scaling to the time step DT (0: none). --elform 16: the blank's shells fully
 integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-Tsay.
+--yield barlat|hill: the aluminium with the benchmark's Lankford ratios (R00 0.71, R45 0.58,
+R90 0.70) as Barlat 89 (M 8, *MAT_3-PARAMETER_BARLAT) or Hill 1948 (*MAT_HILL_3R), rolled
+along x; j2 (the default) is isotropic (*MAT_PIECEWISE_LINEAR_PLASTICITY).
 --plain: the deck as a user writes it: every setting the solver leaves to its defaults (no
 *HOURGLASS: the viscous default; the shipped deck sets only the stiffness form, IHQ 4, which
 `plyform check` asks for on one-point shells under a cohesive interface). --backup: PENOPT 3
@@ -48,8 +51,10 @@ BLANK_HALF = 75.0
 HOLDER_FORCE = 19600.0  # N on the whole blank; the quarter model carries a quarter of it
 FRICTION = 0.162  # tools against the aluminium
 
-# Aluminium (the benchmark's hardening law, isotropic: sigma_y = K (EPS0 + eps_p)^N).
-AL = {"rho": 2.7e-9, "E": 71000.0, "nu": 0.33, "K": 576.79, "eps0": 0.01658, "n": 0.3593}
+# Aluminium (the benchmark's hardening law: sigma_y = K (EPS0 + eps_p)^N, and its Lankford
+# ratios R00, R45, R90, which --yield barlat|hill uses; the rolling direction along x).
+AL = {"rho": 2.7e-9, "E": 71000.0, "nu": 0.33, "K": 576.79, "eps0": 0.01658, "n": 0.3593,
+      "r00": 0.71, "r45": 0.58, "r90": 0.70}
 CORE = {"rho": 1.2e-9, "nu": 0.35}  # a soft polymer core
 CORE_E = 1500.0
 TOOL = {"rho": 7.85e-9, "E": 210000.0, "nu": 0.3}
@@ -271,13 +276,7 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
         k += [f"*PART\n{title}\n", card(part, part, 1 if mat == "al" else 2, 0, hgid)]
         k += ["*SECTION_SHELL\n", card(part, ELFORM, 0.8333, 5 if mat == "al" else 3),
               card(*([t] * 4))]
-    k += ["*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\naluminium (NUMISHEET'93 hardening)\n",
-          card(1, AL["rho"], AL["E"], AL["nu"], 0.0, 0.0, 0.0), card(0.0, 0.0, 1, 0),
-          card(*([0.0] * 8)), card(*([0.0] * 8))]
-    k += ["*DEFINE_CURVE_TITLE\naluminium yield stress against plastic strain\n", card(1)]
-    for i in range(41):
-        ep = 2.0 * (i / 40) ** 2
-        k.append(f"{ep:20.10g}{AL['K'] * (AL['eps0'] + ep) ** AL['n']:20.10g}\n")
+    k += aluminium_cards()
     k += ["*MAT_ELASTIC_TITLE\ncore\n", card(2, CORE["rho"], CORE_E, CORE["nu"])]
     k += tool_cards()
     k += ["*NODE\n"]
@@ -364,6 +363,34 @@ def write_deck(outdir, name, text, params):
         json.dump(params, f, indent=1)
 
 
+def aluminium_cards():
+    """The aluminium's material: J2 with the hardening curve (*MAT_024), or with --yield the
+    benchmark's anisotropy, Barlat 89 with M 8 (*MAT_036) or Hill 1948 (*MAT_122), both with the
+    Swift law (HR 2) of the same curve and the rolling direction along x (AOPT 2)."""
+    swift = (AL["K"], AL["n"])
+    axes = [card(2.0), card(0.0, 0.0, 0.0, 1.0, 0.0, 0.0), card(0.0, 0.0, 0.0, 0.0, 0.0, 1.0)]
+    if YIELD == "barlat":
+        return (["*MAT_3-PARAMETER_BARLAT_TITLE\naluminium (NUMISHEET'93, Barlat 89)\n",
+                 card(1, AL["rho"], AL["E"], AL["nu"], 2.0, *swift, 0.0),
+                 card(8.0, AL["r00"], AL["r45"], AL["r90"], 0, AL["eps0"], 0.0, 0.0)] + axes[:2]
+                + [card(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)])
+    if YIELD == "hill":
+        return (["*MAT_HILL_3R_TITLE\naluminium (NUMISHEET'93, Hill 1948)\n",
+                 card(1, AL["rho"], AL["E"], AL["nu"], 2.0, *swift),
+                 card(AL["r00"], AL["r45"], AL["r90"], 0, AL["eps0"])] + axes)
+    k = ["*MAT_PIECEWISE_LINEAR_PLASTICITY_TITLE\naluminium (NUMISHEET'93 hardening)\n",
+         card(1, AL["rho"], AL["E"], AL["nu"], 0.0, 0.0, 0.0), card(0.0, 0.0, 1, 0),
+         card(*([0.0] * 8)), card(*([0.0] * 8))]
+    k += ["*DEFINE_CURVE_TITLE\naluminium yield stress against plastic strain\n", card(1)]
+    for i in range(41):
+        ep = 2.0 * (i / 40) ** 2
+        k.append(f"{ep:20.10g}{AL['K'] * (AL['eps0'] + ep) ** AL['n']:20.10g}\n")
+    return k
+
+
+# The aluminium's yield function: "j2" (*MAT_024), "barlat" (*MAT_036) or "hill" (*MAT_122).
+YIELD = "j2"
+
 # The blank's shell formulation: 2 (Belytschko-Tsay, stiffness hourglass control) or 16 (fully
 # integrated, no hourglass control).
 ELFORM = 2
@@ -401,6 +428,8 @@ def main(argv):
             globals()[key] = float(value)
         elif a == "--elform":
             globals()["ELFORM"] = int(args.pop(0))
+        elif a == "--yield":
+            globals()["YIELD"] = args.pop(0)
         elif a == "--plain":
             globals()["PLAIN"] = True
         elif a == "--slave":
@@ -417,6 +446,8 @@ def main(argv):
         sys.exit("generate.py: --layers is 1 or 3")
     if SLAVE not in ("skin", "core"):
         sys.exit("generate.py: --slave is skin or core")
+    if YIELD not in ("j2", "barlat", "hill"):
+        sys.exit("generate.py: --yield is j2, barlat or hill")
     if ELFORM not in (2, 16):
         sys.exit("generate.py: --elform is 2 or 16")
     name = name or f"square_cup_{layers}"

@@ -50,32 +50,25 @@ struct PlaneStressCompliance {
 template <class Y, class H>
 bool anisotropic_return_once(const Y& yf, const H& hard, const PlaneStressCompliance& cc,
                              const double* s_tr, double e_n, double* s, double& dlam) {
-  const double sy0 = hard.value(e_n);
-  const double tol = 1e-12 * sy0;
-  s[0] = s_tr[0], s[1] = s_tr[1], s[2] = s_tr[2];
-  dlam = 0.0;
-  YieldState y;
-  const auto residual = [&](const double* st, double dl, double phi, const double* g, double* rs,
-                            double& rf) {
-    for (int i = 0; i < 3; ++i) {
-      const double ds[3] = {st[0] - s_tr[0], st[1] - s_tr[1], st[2] - s_tr[2]};
-      rs[i] = cc.c[3 * i] * ds[0] + cc.c[3 * i + 1] * ds[1] + cc.c[3 * i + 2] * ds[2] + dl * g[i];
-    }
-    rf = phi - hard.value(e_n + dl);
-  };
+  const double tol = 1e-12 * hard.value(e_n);
   // The residual's size in stress units: R_s scaled by 1 / Cinv_11 = E.
   const double young = 1.0 / cc.c[0];
-  const auto norm = [&](const double* rs, double rf) {
+  const auto residual = [&](const double* st, double dl, const YieldState& y, double* rs) {
+    const double ds[3] = {st[0] - s_tr[0], st[1] - s_tr[1], st[2] - s_tr[2]};
+    for (int i = 0; i < 3; ++i)
+      rs[i] = cc.c[3 * i] * ds[0] + cc.c[3 * i + 1] * ds[1] + cc.c[3 * i + 2] * ds[2] + dl * y.g[i];
+    const double rf = y.phi - hard.value(e_n + dl);
     return std::max(
         {std::abs(rf), young * std::abs(rs[0]), young * std::abs(rs[1]), young * std::abs(rs[2])});
   };
-  for (int it = 0; it < kAnisotropicMaxIterations; ++it) {
-    yf.evaluate(s, y);
-    double rs[3], rf;
-    residual(s, dlam, y.phi, y.g, rs, rf);
-    const double r0 = norm(rs, rf);
-    if (r0 <= tol)
-      return true;
+  s[0] = s_tr[0], s[1] = s_tr[1], s[2] = s_tr[2];
+  dlam = 0.0;
+  YieldState y;
+  yf.evaluate(s, y);
+  double rs[3];
+  double r0 = residual(s, dlam, y, rs);
+  for (int it = 0; it < kAnisotropicMaxIterations && r0 > tol; ++it) {
+    const double rf = y.phi - hard.value(e_n + dlam);
     double a[9];
     for (int i = 0; i < 9; ++i)
       a[i] = cc.c[i] + dlam * y.hs[i];
@@ -86,27 +79,31 @@ bool anisotropic_return_once(const Y& yf, const H& hard, const PlaneStressCompli
     const double ddl = (rf - g_ai_r) / (g_ai_g + hard.slope(e_n + dlam));
     const double ds[3] = {-ai_r[0] - ai_g[0] * ddl, -ai_r[1] - ai_g[1] * ddl,
                           -ai_r[2] - ai_g[2] * ddl};
-    // Backtracking: halve the step until the residual falls (at most 12 times).
+    // The full step, evaluated with the Hessian (it is taken nearly always); else halve it
+    // until the residual falls (at most 12 times), then evaluate the Hessian where it landed.
     double step = 1.0;
     for (int k = 0; k < 12; ++k) {
       const double st[3] = {s[0] + step * ds[0], s[1] + step * ds[1], s[2] + step * ds[2]};
       const double dl = std::max(dlam + step * ddl, 0.0);
       YieldState yt;
-      yf.evaluate(st, yt);
-      double rst[3], rft;
-      residual(st, dl, yt.phi, yt.g, rst, rft);
-      if (norm(rst, rft) < (1.0 - 1e-4 * step) * r0 || k == 11) {
+      yf.evaluate(st, yt, k == 0);
+      double rst[3];
+      const double r = residual(st, dl, yt, rst);
+      if (r < (1.0 - 1e-4 * step) * r0 || k == 11) {
         s[0] = st[0], s[1] = st[1], s[2] = st[2];
         dlam = dl;
+        if (k == 0)
+          y = yt;
+        else
+          yf.evaluate(s, y);
+        rs[0] = rst[0], rs[1] = rst[1], rs[2] = rst[2];
+        r0 = r;
         break;
       }
       step *= 0.5;
     }
   }
-  yf.evaluate(s, y);
-  double rs[3], rf;
-  residual(s, dlam, y.phi, y.g, rs, rf);
-  return norm(rs, rf) <= 1e3 * tol;
+  return r0 <= 1e3 * tol;
 }
 
 /// The return of a point whose trial stress s_tr lies outside the yield surface: from the
@@ -126,7 +123,7 @@ double anisotropic_return(const Y& yf, const H& hard, const PlaneStressComplianc
       const double st[3] = {cur[0] + (s_tr[0] - s_n[0]) / pieces,
                             cur[1] + (s_tr[1] - s_n[1]) / pieces,
                             cur[2] + (s_tr[2] - s_n[2]) / pieces};
-      if (!(yf.value(st) > hard.value(e))) {
+      if (!yf.exceeds(st, hard.value(e))) {
         cur[0] = st[0], cur[1] = st[1], cur[2] = st[2];
         continue;
       }

@@ -37,14 +37,19 @@ struct Hill48Yield {
     return std::sqrt(q > 0.0 ? q : 0.0);
   }
 
-  // grad phi = P s / phi, Hessian (P - g g^T) / phi.
-  void evaluate(const double* s, YieldState& y) const {
+  /// Whether s lies outside the surface of radius sy.
+  [[nodiscard]] bool exceeds(const double* s, double sy) const { return value(s) > sy; }
+
+  // grad phi = P s / phi, Hessian (P - g g^T) / phi (skipped without `hessian`).
+  void evaluate(const double* s, YieldState& y, bool hessian = true) const {
     const double ps[3] = {s[0] - h * s[1], -h * s[0] + (f + h) * s[1], 2.0 * n * s[2]};
     const double phi = std::sqrt(std::max(s[0] * ps[0] + s[1] * ps[1] + s[2] * ps[2], 1e-300));
     y.phi = phi;
     const double inv = 1.0 / phi;
     for (int i = 0; i < 3; ++i)
       y.g[i] = ps[i] * inv;
+    if (!hessian)
+      return;
     const double p[9] = {1.0, -h, 0.0, -h, f + h, 0.0, 0.0, 0.0, 2.0 * n};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
@@ -60,15 +65,38 @@ struct Hill48Yield {
 struct Barlat89Yield {
   double a, c, h, p, m;
 
-  [[nodiscard]] double value(const double* s) const {
+  // x^e for x >= 0: by squaring when m is a whole number (the exponents of real cards, 6 and
+  // 8, and m - 2), else std::pow. The powers are most of the law's cost.
+  [[nodiscard]] double power(double x, double e) const {
+    if (whole()) {
+      auto n = static_cast<unsigned>(e);
+      double r = 1.0, b = x;
+      while (n != 0) {
+        if (n & 1u)
+          r *= b;
+        b *= b;
+        n >>= 1u;
+      }
+      return r;
+    }
+    return std::pow(x, e);
+  }
+  [[nodiscard]] bool whole() const { return m == std::floor(m) && m <= 64.0; }
+
+  // 2 phi^m = F(s) * 2: the sum of the three terms, without the root.
+  [[nodiscard]] double big_f(const double* s) const {
     const double k1 = 0.5 * (s[0] + h * s[1]);
     const double k2 = std::hypot(0.5 * (s[0] - h * s[1]), p * s[2]);
-    const double f = 0.5 * (a * std::pow(std::abs(k1 + k2), m) +
-                            a * std::pow(std::abs(k1 - k2), m) + c * std::pow(2.0 * k2, m));
-    return std::pow(f, 1.0 / m);
+    return 0.5 * (a * power(std::abs(k1 + k2), m) + a * power(std::abs(k1 - k2), m) +
+                  c * power(2.0 * k2, m));
   }
 
-  void evaluate(const double* s, YieldState& y) const {
+  [[nodiscard]] double value(const double* s) const { return std::pow(big_f(s), 1.0 / m); }
+
+  /// Whether s lies outside the surface of radius sy (phi^m against sy^m: no root taken).
+  [[nodiscard]] bool exceeds(const double* s, double sy) const { return big_f(s) > power(sy, m); }
+
+  void evaluate(const double* s, YieldState& y, bool hessian = true) const {
     const double scale = std::abs(s[0]) + std::abs(s[1]) + std::abs(s[2]) + 1e-300;
     const double k1 = 0.5 * (s[0] + h * s[1]);
     const double x = 0.5 * (s[0] - h * s[1]), yy = p * s[2];
@@ -79,7 +107,7 @@ struct Barlat89Yield {
     double big_f = 0.0, fu[3], fuu[3];
     for (int i = 0; i < 3; ++i) {
       const double au = std::abs(u[i]);
-      const double pm2 = std::pow(au, m - 2.0);  // |u|^(m-2)
+      const double pm2 = power(au, m - 2.0);  // |u|^(m-2)
       big_f += 0.5 * w[i] * pm2 * au * au;
       fu[i] = 0.5 * w[i] * m * pm2 * u[i];  // dF/du = (w m / 2) |u|^(m-2) u
       fuu[i] = 0.5 * w[i] * m * (m - 1.0) * pm2;
@@ -97,6 +125,13 @@ struct Barlat89Yield {
     double gf[3], hf[9];
     for (int i = 0; i < 3; ++i)
       gf[i] = f_k1 * dk1[i] + f_k2 * dk2[i];
+    const double phi = std::pow(big_f, 1.0 / m);
+    const double k = phi / (m * big_f);
+    y.phi = phi;
+    for (int i = 0; i < 3; ++i)
+      y.g[i] = k * gf[i];
+    if (!hessian)
+      return;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         const double d2k2 =
@@ -105,14 +140,9 @@ struct Barlat89Yield {
                         f_22 * dk2[i] * dk2[j] + f_k2 * d2k2;
       }
     }
-    // phi = F^(1/m): grad phi = phi / (m F) grad F,
+    // phi = F^(1/m): grad phi = phi / (m F) grad F (above),
     // Hess phi = phi / (m F) (Hess F + (1/m - 1) grad F grad F^T / F).
-    const double phi = std::pow(big_f, 1.0 / m);
-    const double k = phi / (m * big_f);
     const double kk = (1.0 / m - 1.0) / big_f;
-    y.phi = phi;
-    for (int i = 0; i < 3; ++i)
-      y.g[i] = k * gf[i];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         y.hs[3 * i + j] = k * (hf[3 * i + j] + kk * gf[i] * gf[j]);

@@ -56,7 +56,7 @@ void orthotropic_return_kernel(const Y& yf, const H& hard, const CowperSymonds& 
     const double k = rate.on() ? rate.factor(shell_strain_rate(pts, p, pts.dt)) : 1.0;
     const auto h = detail::scaled(hard, k);
     const double e_n = pts.eps_p[p];
-    if (!(yf.value(tr) > h.value(e_n)))
+    if (!yf.exceeds(tr, h.value(e_n)))
       continue;
     double de[3];
     to_axes(c, s, c11 * pts.dxx[p] + c12 * pts.dyy[p], c12 * pts.dxx[p] + c11 * pts.dyy[p],
