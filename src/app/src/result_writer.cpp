@@ -153,8 +153,9 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
       shell_zeta_.push_back(std::move(zeta));
     }
   }
-  if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
+  if ((!model.contacts.empty() || !model.tied.empty()) && model.output.rcforc_dt > 0.0)
     rcforc_.emplace(outdir / output::rcforc_file_name, at(kRcforc));
+  if (!model.contacts.empty() && model.output.rcforc_dt > 0.0) {
     interface_energy_.emplace(
         outdir / kInterfaceEnergy,
         std::vector<std::string>{"time", "interface", "work", "stored", "damage", "viscous",
@@ -542,6 +543,8 @@ void ResultWriter::contact_forces(double time,
   rcforc_rows_.clear();
   for (const contact::InterfaceReport& r : interfaces) {
     rcforc_rows_.push_back({time, r.id, r.force[0], r.force[1], r.force[2]});
+    if (r.tied || !interface_energy_)
+      continue;  // a constraint: no books
     interface_energy_->row_mixed({time, static_cast<std::int64_t>(r.id), r.work, r.stored, r.damage,
                                   r.viscous, r.friction, r.damping, r.healing,
                                   static_cast<std::int64_t>(r.in_contact),

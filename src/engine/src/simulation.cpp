@@ -957,7 +957,7 @@ double Simulation::State::advance_velocity(double t_now, double dt_prev, double 
     }
   }
   if (ties)
-    next_ext += ties->follow(s);
+    next_ext += ties->follow(s, dt_avg);
   if (dt_prev == 0.0) {
     // The first half step, [0, dt/2]. A constraint that sets a velocity at t = 0 (a motion
     // prescribed from rest, an SPC on a node that has an initial velocity) acts as an impulse:
@@ -1335,9 +1335,23 @@ void Simulation::State::write_outputs(bool last) {
         next_tprint += out.tprint_dt;
     }
   }
-  if (contact && out.rcforc_dt > 0.0 && due(next_rcforc, 1u << 6)) {
+  if ((contact || ties) && out.rcforc_dt > 0.0 && due(next_rcforc, 1u << 6)) {
     written |= 1u << 6;
-    sink.contact_forces(t, contact->report());
+    std::vector<contact::InterfaceReport> reports;
+    if (contact)
+      reports = contact->report();
+    if (ties) {
+      // The tied contacts after the others, in the deck's order among themselves.
+      for (std::size_t k = 0; k < model.tied.size(); ++k) {
+        contact::InterfaceReport r;
+        r.id = model.tied[k].id;
+        r.tied = true;
+        r.force = ties->reactions()[k];
+        r.master_force = {-r.force[0], -r.force[1], -r.force[2]};
+        reports.push_back(r);
+      }
+    }
+    sink.contact_forces(t, reports);
     while (next_rcforc <= t + eps_t)
       next_rcforc += out.rcforc_dt;
   }

@@ -21,8 +21,10 @@ void offset(const core::Model& m, const NodalState& s, core::Index slave, const 
 
 }  // namespace
 
-TiedNodes::TiedNodes(const core::Model& model) : model_(model) {
-  for (const core::TiedInterface& t : model.tied) {
+TiedNodes::TiedNodes(const core::Model& model)
+    : model_(model), reaction_(model.tied.size(), std::array<double, 3>{0.0, 0.0, 0.0}) {
+  for (std::size_t ti = 0; ti < model.tied.size(); ++ti) {
+    const core::TiedInterface& t = model.tied[ti];
     for (std::size_t k = 0; k < t.slaves.size(); ++k) {
       Link l;
       l.slave = t.slaves[k];
@@ -33,8 +35,10 @@ TiedNodes::TiedNodes(const core::Model& model) : model_(model) {
         l.w[a] = t.weight[k][a];
       }
       slave_.push_back(l);
+      interface_of_.push_back(ti);
     }
   }
+  net_.assign(3 * slave_.size(), 0.0);
 }
 
 void TiedNodes::lump(const std::vector<double>& mass, const std::vector<double>& inertia,
@@ -81,11 +85,13 @@ void TiedNodes::lump(const std::vector<double>& mass, const std::vector<double>&
   }
 }
 
-void TiedNodes::gather(NodalState& s) const {
-  for (const Link& l : slave_) {
+void TiedNodes::gather(NodalState& s) {
+  for (std::size_t k = 0; k < slave_.size(); ++k) {
+    const Link& l = slave_[k];
     const auto i = static_cast<std::size_t>(l.slave);
     // The net force on the slave, in the internal arrays' sense (subtracted by the update).
     const double f[3] = {s.fx[i] - s.ex[i], s.fy[i] - s.ey[i], s.fz[i] - s.ez[i]};
+    net_[3 * k] = f[0], net_[3 * k + 1] = f[1], net_[3 * k + 2] = f[2];
     for (int a = 0; a < 4; ++a) {
       const auto j = static_cast<std::size_t>(l.node[a]);
       s.fx[j] += l.w[a] * f[0];
@@ -110,9 +116,13 @@ void TiedNodes::gather(NodalState& s) const {
   }
 }
 
-double TiedNodes::follow(NodalState& s) const {
+double TiedNodes::follow(NodalState& s, double dt_avg) {
   double work = 0.0;
-  for (const Link& l : slave_) {
+  for (auto& r : reaction_)
+    r = {0.0, 0.0, 0.0};
+  const double inv_dt = dt_avg > 0.0 ? 1.0 / dt_avg : 0.0;
+  for (std::size_t k = 0; k < slave_.size(); ++k) {
+    const Link& l = slave_[k];
     const auto i = static_cast<std::size_t>(l.slave);
     double v[3] = {0.0, 0.0, 0.0};
     for (int a = 0; a < 4; ++a) {
@@ -139,6 +149,13 @@ double TiedNodes::follow(NodalState& s) const {
       s.wz[i] = w[2];
     }
     work += (v[0] - s.vx[i]) * s.ex[i] + (v[1] - s.vy[i]) * s.ey[i] + (v[2] - s.vz[i]) * s.ez[i];
+    // The slave kept its velocity of the last half step through the update (no mass of its
+    // own there): v - s.v is its whole change, m_s (v - s.v) / dt_avg the force it took.
+    std::array<double, 3>& r = reaction_[interface_of_[k]];
+    const double m = s.mass[i] * inv_dt;
+    r[0] += m * (v[0] - s.vx[i]) + net_[3 * k];
+    r[1] += m * (v[1] - s.vy[i]) + net_[3 * k + 1];
+    r[2] += m * (v[2] - s.vz[i]) + net_[3 * k + 2];
     s.vx[i] = v[0];
     s.vy[i] = v[1];
     s.vz[i] = v[2];

@@ -13,6 +13,7 @@
 // differences' conserved one less 1/2 m_s (sum w_j v_j^2 - (sum w_j v_j)^2) per slave: nothing
 // while the segment moves as a whole, a trace where it deforms.
 
+#include <array>
 #include <vector>
 
 #include "plyform/core/model.hpp"
@@ -35,12 +36,18 @@ class TiedNodes {
   /// moment and the force's moment about the surface point, onto its segment's nodes' internal
   /// force arrays (the slave's own are zeroed; its external load stays where the engine books
   /// its work).
-  void gather(NodalState& s) const;
+  void gather(NodalState& s);
 
   /// After the update (constraints, rigid bodies and walls done): the slaves' velocities (and
   /// rotations) from their segments'. Returns the correction of the next half step's external
-  /// work rate, sum (v_s - v_free) . e_s.
-  double follow(NodalState& s) const;
+  /// work rate, sum (v_s - v_free) . e_s. dt_avg: the step the update took (v_{n+1/2} =
+  /// v_{n-1/2} + dt_avg a_n), for the reactions.
+  double follow(NodalState& s, double dt_avg);
+
+  /// Each tied contact's reaction in the last update, in model.tied's order: the force its
+  /// master surface applied to its tied nodes, sum over them of m_s a_s - (e_s - f_s) (the
+  /// node's mass times the acceleration the tie gave it, less the forces that act on it).
+  [[nodiscard]] const std::vector<std::array<double, 3>>& reactions() const { return reaction_; }
 
  private:
   struct Link {
@@ -51,6 +58,9 @@ class TiedNodes {
   };
   const core::Model& model_;
   std::vector<Link> slave_;
+  std::vector<std::size_t> interface_of_;  ///< each link's tied contact (model.tied's index)
+  std::vector<double> net_;                ///< each slave's f - e at the last gather, 3 per link
+  std::vector<std::array<double, 3>> reaction_;
 };
 
 }  // namespace plyform::engine

@@ -35,6 +35,9 @@ struct InterfaceReport {
   double healing = 0.0;        ///< adhesion energy restored by re-healing
   std::size_t in_contact = 0;  ///< slave nodes in compressive contact
   std::size_t bonded = 0;      ///< slave nodes separating with adhesion (beta > 0)
+  /// A tied contact (a constraint): `force` is the reaction its master surface applies to the
+  /// tied nodes; it has no energy books (interface_energy.csv leaves it out).
+  bool tied = false;
 };
 
 /// One slave node of a cohesive interface at the time of the last pass.
