@@ -42,7 +42,8 @@ inline std::map<std::string, std::string> appended_arrays(const std::string& vtu
 /// An appended Float64 array as doubles.
 inline std::vector<double> as_doubles(const std::string& bytes) {
   std::vector<double> values(bytes.size() / sizeof(double));
-  std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
+  if (!values.empty())  // an absent array: no copy (memcpy from null is undefined)
+    std::memcpy(values.data(), bytes.data(), values.size() * sizeof(double));
   return values;
 }
 

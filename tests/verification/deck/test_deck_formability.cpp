@@ -184,7 +184,8 @@ std::map<std::string, std::vector<double>> last_state(const std::string& deck) {
   for (const auto& [name, bytes] : test::appended_arrays(read_text(states.back()))) {
     if (name == "element_id") {  // Int64
       std::vector<std::int64_t> ids(bytes.size() / sizeof(std::int64_t));
-      std::memcpy(ids.data(), bytes.data(), ids.size() * sizeof(std::int64_t));
+      if (!ids.empty())
+        std::memcpy(ids.data(), bytes.data(), ids.size() * sizeof(std::int64_t));
       arrays[name].assign(ids.begin(), ids.end());
     } else {
       arrays[name] = test::as_doubles(bytes);
