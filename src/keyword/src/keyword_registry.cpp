@@ -86,6 +86,8 @@ KeywordSpec boundary_flux_set_keyword();
 KeywordSpec boundary_radiation_set_keyword();
 KeywordSpec initial_velocity_generation_keyword();
 KeywordSpec initial_velocity_node_keyword();
+KeywordSpec initial_stress_shell_keyword();
+KeywordSpec initial_strain_shell_keyword();
 KeywordSpec initial_temperature_node_keyword();
 KeywordSpec initial_temperature_set_keyword();
 KeywordSpec load_node_point_keyword();
@@ -213,6 +215,8 @@ std::span<const KeywordSpec> keyword_registry() {
       boundary_radiation_set_keyword(),
       initial_velocity_generation_keyword(),
       initial_velocity_node_keyword(),
+      initial_stress_shell_keyword(),
+      initial_strain_shell_keyword(),
       initial_temperature_node_keyword(),
       initial_temperature_set_keyword(),
       load_node_point_keyword(),

@@ -15,6 +15,7 @@
 #include "plyform/model/element_shell_desc.hpp"
 #include "plyform/model/element_solid_desc.hpp"
 #include "plyform/model/hourglass_desc.hpp"
+#include "plyform/model/initial_shell_state_desc.hpp"
 #include "plyform/model/initial_velocity_desc.hpp"
 #include "plyform/model/load_node_desc.hpp"
 #include "plyform/model/load_pressure_desc.hpp"
@@ -94,6 +95,8 @@ struct ModelDesc {
   std::vector<InitialVelocityNodeDesc> initial_node_velocities;
   std::vector<InitialTemperatureDesc> initial_temperatures;
   std::vector<BoundaryTemperatureDesc> temperature_histories;
+  std::vector<InitialStressShellDesc> initial_shell_stresses;  ///< *INITIAL_STRESS_SHELL
+  std::vector<InitialStrainShellDesc> initial_shell_strains;   ///< *INITIAL_STRAIN_SHELL
 
   // Heat transfer (computed temperatures)
   std::optional<ControlSolutionDesc> control_solution;
@@ -120,6 +123,7 @@ struct ModelDesc {
   std::optional<DatabaseEloutDesc> elout;
   std::optional<DatabaseExtentBinaryDesc> extent_binary;
   std::vector<DatabaseHistoryElementDesc> history_elements;  ///< _SHELL and _SOLID, deck order
+  std::optional<InterfaceSpringbackDesc> springback;  ///< *INTERFACE_SPRINGBACK_LSDYNA (dynain)
 
   std::vector<std::string> files_read;  ///< the main deck first, then each include as opened
   /// FNV-1a (64 bit) over the text of every file read, in reading order: a checkpoint belongs
