@@ -16,6 +16,7 @@
 
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
+#include "initial_shell_stress.hpp"
 #include "mass.hpp"
 #include "pass_clock.hpp"
 #include "plyform/core/invariant.hpp"
@@ -384,6 +385,8 @@ void Simulation::State::set_up_run() {
         model.shell_blocks[b],
         material::history_per_point(
             model.materials[static_cast<std::size_t>(model.shell_blocks[b].material)]));
+  // *INITIAL_STRESS_SHELL (a formed part's dynain): before the first element pass.
+  apply_initial_shell_stresses(model, shells);
 
   if (model.thermal.enabled) {
     heat.emplace(model, std::span<double>(s.temperature));
@@ -1860,6 +1863,9 @@ RunResult Simulation::run() {
       st.sink.heat(st.t, st.heat->ledger());
     if (st.model.output.glstat_dt > 0.0 && st.en.time != st.t)
       st.sink.glstat(st.energies());
+    // The end state for the files written once (dynain), on the end's positions.
+    st.sync();
+    st.sink.end_of_run(st.snapshot());
     // The end's checkpoint lets a restart go on past the end time (--end-time).
     if (checkpoints && st.options.checkpoint_cycles > 0)
       st.write_checkpoint();

@@ -11,6 +11,7 @@
 
 #include "build_contact.hpp"
 #include "build_expansion.hpp"
+#include "build_initial_state.hpp"
 #include "build_rigid_walls.hpp"
 #include "build_tables.hpp"
 #include "build_thermal.hpp"
@@ -642,6 +643,7 @@ BuildResult build(const model::ModelDesc& desc) {
             "a node is shared by more solid elements than the element colouring supports (128)");
   }
   element_histories(desc, b.m, b.out.warnings);
+  build_initial_state(desc, b.m, b.out.errors, b.out.warnings);
   // Contacts last: they read the final (coloured) element blocks.
   build_contacts(desc, b.m, b.out.errors, b.out.warnings);
   build_temperatures(desc, b.m, b.out.errors);

@@ -192,6 +192,26 @@ struct BlockElement {
   Index element = 0;
 };
 
+/// *INITIAL_STRESS_SHELL, resolved by setup: one shell's stress and effective plastic strain at
+/// t = 0 at the points the card gives: `thickness_points` through the thickness (their T,
+/// increasing) times `in_plane` (1 or 4) in-plane points, thickness point major
+/// (k * in_plane + g), the stress in global axes (xx yy zz xy yz zx). The engine interpolates
+/// them to the block's points and turns them into the element's co-rotational frame of t = 0
+/// (engine/initial_shell_stress.hpp).
+struct InitialShellStress {
+  BlockElement shell;
+  int in_plane = 1;
+  std::vector<double> t;               ///< per thickness point, in [-1, 1], increasing
+  std::vector<double> stress;          ///< 6 per point
+  std::vector<double> plastic_strain;  ///< 1 per point
+};
+
+/// *INTERFACE_SPRINGBACK_LSDYNA: the dynain file written at the end of the run.
+struct DynainRequest {
+  bool write = false;
+  std::vector<Index> shell_blocks;  ///< the deformable shell blocks written, in block order
+};
+
 struct OutputRequests {
   double d3plot_dt = 0.0;            ///< *DATABASE_BINARY_D3PLOT (0: first and last state only)
   double glstat_dt = 0.0;            ///< *DATABASE_GLSTAT (0: none)
@@ -216,6 +236,7 @@ struct OutputRequests {
     bool thickness = true;                                          ///< ENGFLG
     bool strain = false;                                            ///< STRFLG c = 1
   } state_fields;
+  DynainRequest dynain;  ///< *INTERFACE_SPRINGBACK_LSDYNA: OUTDIR/dynain at the end
 };
 
 struct Model {
@@ -241,6 +262,7 @@ struct Model {
   std::vector<RigidWall> rigid_walls;  ///< *RIGIDWALL_PLANAR, in deck order
   std::vector<double> v0x, v0y, v0z;   ///< initial velocities (empty: at rest)
   std::vector<double> w0x, w0y, w0z;   ///< initial angular velocities of shell nodes (empty: none)
+  std::vector<InitialShellStress> initial_shell_stresses;  ///< *INITIAL_STRESS_SHELL
   // Temperatures (the law reads the slave node's): *INITIAL_TEMPERATURE, *BOUNDARY_TEMPERATURE.
   std::vector<double> temperature0;  ///< per node at t = 0 (empty: 0 everywhere)
   std::vector<TemperatureHistory> temperature_histories;

@@ -107,6 +107,9 @@ class OutputSink {
   virtual void heat(double /*time*/, const thermal::HeatLedger& /*ledger*/) {}
   /// At the tprint interval: the history nodes' temperatures are in `s.nodes->temperature`.
   virtual void temperatures(const Snapshot& /*s*/) {}
+  /// Once, when the run reached its end time (not after an instability or a stop): the end
+  /// state, positions up to date (the dynain file of *INTERFACE_SPRINGBACK_LSDYNA).
+  virtual void end_of_run(const Snapshot& /*s*/) {}
   /// Every cycle (cheap: the sink throttles); wall seconds since the start.
   virtual void progress(double /*time*/, double /*end_time*/, long /*cycle*/, double /*dt*/,
                         double /*wall*/) {}
