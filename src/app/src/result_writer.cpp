@@ -5,8 +5,10 @@
 #include <numbers>
 #include <variant>
 
+#include "plyform/app/dynain_writer.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/material/woven_ply.hpp"
+#include "shell_stress_global.hpp"
 #include "state_strain.hpp"
 
 namespace plyform::app {
@@ -29,30 +31,6 @@ constexpr const char* kCohesive = "cohesive.csv";
 constexpr const char* kHeat = "heat.csv";
 constexpr const char* kTprint = "tprint.csv";
 
-/// A shell point's stress from the element's co-rotational frame (rows e1, e2, e3 in `axes`;
-/// `l` the local tensor, szz = 0) to global axes, sigma_g = sum_ab e_a l_ab e_b, as
-/// xx, yy, zz, xy, yz, zx.
-void shell_stress_to_global(const double* const axes[3], const double l[3][3], double* out) {
-  static constexpr int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
-  for (int c = 0; c < 6; ++c) {
-    double v = 0.0;
-    for (int a = 0; a < 3; ++a)
-      for (int bb = 0; bb < 3; ++bb)
-        v += axes[a][kPair[c][0]] * l[a][bb] * axes[bb][kPair[c][1]];
-    out[c] = v;
-  }
-}
-
-/// The frame of shell e of `blk` at the current positions; the global axes for a collapsed
-/// element (its stresses are then written as they are kept).
-void current_shell_frame(const core::ShellBlock& blk, const engine::NodalState& ns, std::size_t e,
-                         double e1[3], double e2[3], double e3[3]) {
-  if (!element::shell_frame(blk, ns.x.data(), ns.y.data(), ns.z.data(), e, e1, e2, e3)) {
-    e1[0] = e2[1] = e3[2] = 1.0;
-    e1[1] = e1[2] = e2[0] = e2[2] = e3[0] = e3[1] = 0.0;
-  }
-}
-
 /// The number of shell cells (the last cells of every state).
 std::size_t shell_cells(const core::Model& model) {
   std::size_t n = 0;
@@ -66,7 +44,7 @@ std::size_t shell_cells(const core::Model& model) {
 ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path& outdir,
                            std::ostream& terminal, bool show_progress,
                            const core::StateArchive::Records* resume)
-    : model_(model), series_(outdir), progress_(terminal, show_progress) {
+    : model_(model), outdir_(outdir), series_(outdir), progress_(terminal, show_progress) {
   std::optional<core::StateArchive> archive;
   if (resume != nullptr)
     archive.emplace(core::StateArchive::for_loading(*resume));
@@ -652,6 +630,11 @@ void ResultWriter::save_state(core::StateArchive& archive) {
     put(kHeat, *heat_);
   if (tprint_)
     put(kTprint, *tprint_);
+}
+
+void ResultWriter::end_of_run(const engine::Snapshot& s) {
+  if (model_.output.dynain.write)
+    write_dynain(outdir_ / "dynain", model_, s);
 }
 
 void ResultWriter::finish() {

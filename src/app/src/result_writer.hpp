@@ -3,7 +3,7 @@
 // glstat.csv, nodout.csv, rbdout.csv (rigid bodies), bndout.csv, spcforc.csv, matsum.csv,
 // elout.csv (history elements), rcforc.csv, interface_energy.csv and sleout.csv (contacts),
 // cohesive.csv (history nodes of cohesive interfaces), heat.csv and tprint.csv (computed
-// temperatures) and the progress line, in OUTDIR.
+// temperatures), dynain (*INTERFACE_SPRINGBACK_LSDYNA) and the progress line, in OUTDIR.
 
 #include <filesystem>
 #include <iosfwd>
@@ -44,12 +44,15 @@ class ResultWriter : public engine::OutputSink {
   void heat(double time, const thermal::HeatLedger& ledger) override;
   void temperatures(const engine::Snapshot& s) override;
   void save_state(core::StateArchive& archive) override;
+  /// *INTERFACE_SPRINGBACK_LSDYNA: OUTDIR/dynain (dynain_writer.hpp).
+  void end_of_run(const engine::Snapshot& s) override;
   void finish();
 
   [[nodiscard]] std::size_t states_written() const { return series_.states_written(); }
 
  private:
   const core::Model& model_;
+  std::filesystem::path outdir_;
   output::VtuSeries series_;
   std::optional<output::GlstatFile> glstat_;
   std::optional<output::NodoutFile> nodout_;

@@ -1,6 +1,7 @@
 #include "shell_formability.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <tuple>
 #include <variant>
@@ -155,6 +156,17 @@ void ShellFormability::compute(const engine::NodalState& nodes,
       }
     }
   }
+}
+
+bool ShellFormability::surface_strain_tensors(std::size_t s, double thickness, double bottom[6],
+                                              double top[6]) const {
+  if (!current_valid_[s])
+    return false;
+  double b[3] = {0.0, 0.0, 0.0};
+  curvature(s, current_, current_valid_, b);
+  return element::shell_surface_strain_tensors(
+      reference_[s], &reference_curvature_[3 * s], current_[s], b, thickness,
+      std::log(thickness / initial_thickness_[s]), bottom, top);
 }
 
 }  // namespace plyform::app

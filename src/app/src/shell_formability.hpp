@@ -27,6 +27,13 @@ class ShellFormability {
   void compute(const engine::NodalState& nodes,
                const std::vector<element::ShellBlockState>& shells);
 
+  /// After compute(): shell s's (its index among all shells, block after block) strain tensors
+  /// at its bottom and top surfaces in global axes, with ln(h/h0) along the normal
+  /// (element::shell_surface_strain_tensors): the dynain file's *INITIAL_STRAIN_SHELL. False
+  /// (nothing written) for a collapsed shell or one of a rigid part.
+  bool surface_strain_tensors(std::size_t s, double thickness, double bottom[6],
+                              double top[6]) const;
+
   /// Per cell. [0] bottom (z = -h/2), [1] middle, [2] top (z = +h/2).
   std::vector<double> major[3], minor[3];
   std::vector<double> thinning;

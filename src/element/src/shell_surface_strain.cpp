@@ -102,18 +102,19 @@ void fit_curvature(const ShellCentre& self, int count, const double (*centres)[3
   b[2] = 0.5 * (cov(0, 1) + cov(1, 0));
 }
 
-bool shell_surface_strains(const ShellCentre& reference, const double b_reference[3],
-                           const ShellCentre& current, const double b_current[3], double thickness,
-                           SurfaceStrains& out) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (int s = 0; s < 3; ++s)
-    out.major[s] = out.minor[s] = nan;
+namespace {
+
+/// The membrane strain 1/2 ln(B) and the change of curvature kappa on the current tangent
+/// plane's axes (see shell_surface_strains). False for a collapsed element.
+bool membrane_and_bending(const ShellCentre& reference, const double b_reference[3],
+                          const ShellCentre& current, const double b_current[3], Matrix2d& membrane,
+                          Matrix2d& kappa) {
   const Vector3d t1 = vec(reference.t1), t2 = vec(reference.t2);
   Matrix2d metric;  // G_ab = T_a . T_b
   metric << t1.dot(t1), t1.dot(t2), t2.dot(t1), t2.dot(t2);
   const Matrix2d j = tangent_components(current);
   const double det_g = metric.determinant(), det_j = j.determinant();
-  if (!(det_g > 0.0) || !(det_j > 0.0) || !std::isfinite(thickness))
+  if (!(det_g > 0.0) || !(det_j > 0.0))
     return false;
   // The in-plane left Cauchy-Green tensor B = F F^T = J G^-1 J^T on the current axes; its
   // logarithm is the membrane part of element_strain.hpp's shell strain.
@@ -124,15 +125,55 @@ bool shell_surface_strains(const ShellCentre& reference, const double b_referenc
   const double mean = 0.5 * left.trace();
   const double radius = std::hypot(0.5 * (left(0, 0) - left(1, 1)), left(0, 1));
   const double slope = radius > 0.0 ? std::atanh(radius / mean) / radius : 1.0 / mean;
-  const Matrix2d membrane = 0.25 * std::log(left.determinant()) * Matrix2d::Identity() +
-                            0.5 * slope * (left - mean * Matrix2d::Identity());
+  membrane = 0.25 * std::log(left.determinant()) * Matrix2d::Identity() +
+             0.5 * slope * (left - mean * Matrix2d::Identity());
   // The change of curvature, covariant (b - b0) turned to the current axes: kappa = J^-T db J^-1.
   const Matrix2d j_inv = j.inverse();
-  const Matrix2d kappa =
-      j_inv.transpose() * (symmetric(b_current) - symmetric(b_reference)) * j_inv;
+  kappa = j_inv.transpose() * (symmetric(b_current) - symmetric(b_reference)) * j_inv;
+  return true;
+}
+
+}  // namespace
+
+bool shell_surface_strains(const ShellCentre& reference, const double b_reference[3],
+                           const ShellCentre& current, const double b_current[3], double thickness,
+                           SurfaceStrains& out) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int s = 0; s < 3; ++s)
+    out.major[s] = out.minor[s] = nan;
+  Matrix2d membrane, kappa;
+  if (!std::isfinite(thickness) ||
+      !membrane_and_bending(reference, b_reference, current, b_current, membrane, kappa))
+    return false;
   const double z[3] = {-0.5 * thickness, 0.0, 0.5 * thickness};
   for (int s = 0; s < 3; ++s)
     principal(membrane + z[s] * kappa, out.major[s], out.minor[s]);
+  return true;
+}
+
+bool shell_surface_strain_tensors(const ShellCentre& reference, const double b_reference[3],
+                                  const ShellCentre& current, const double b_current[3],
+                                  double thickness, double thickness_strain, double bottom[6],
+                                  double top[6]) {
+  Matrix2d membrane, kappa;
+  if (!std::isfinite(thickness) ||
+      !membrane_and_bending(reference, b_reference, current, b_current, membrane, kappa))
+    return false;
+  Vector3d e1, e2;
+  tangent_axes(current, e1, e2);
+  const Vector3d n = vec(current.normal);
+  static constexpr int kPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  const double z[2] = {-0.5 * thickness, 0.5 * thickness};
+  double* out[2] = {bottom, top};
+  for (int s = 0; s < 2; ++s) {
+    const Matrix2d eps = membrane + z[s] * kappa;
+    // eps_g = sum_ab e_a eps_ab e_b + eps_zz n n.
+    const Matrix3d g = e1 * eps(0, 0) * e1.transpose() + e2 * eps(1, 1) * e2.transpose() +
+                       eps(0, 1) * (e1 * e2.transpose() + e2 * e1.transpose()) +
+                       thickness_strain * n * n.transpose();
+    for (int c = 0; c < 6; ++c)
+      out[s][c] = g(kPair[c][0], kPair[c][1]);
+  }
   return true;
 }
 

@@ -50,4 +50,14 @@ bool shell_surface_strains(const ShellCentre& reference, const double b_referenc
                            const ShellCentre& current, const double b_current[3], double thickness,
                            SurfaceStrains& out);
 
+/// The same strains as tensors in global axes at the bottom and top surfaces (xx yy zz xy yz
+/// zx, tensor shears): the in-plane tensor eps_m + z kappa on the current tangent plane's axes,
+/// plus `thickness_strain` (ln(h/h0)) along the normal, as element_strain.hpp adds it to the
+/// mid-surface's strain. For LS-DYNA's *INITIAL_STRAIN_SHELL (the dynain file). False for a
+/// collapsed element.
+bool shell_surface_strain_tensors(const ShellCentre& reference, const double b_reference[3],
+                                  const ShellCentre& current, const double b_current[3],
+                                  double thickness, double thickness_strain, double bottom[6],
+                                  double top[6]);
+
 }  // namespace plyform::element
