@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "plyform/material/law_registry.hpp"
+
 namespace plyform::engine {
 namespace {
 
@@ -81,6 +83,38 @@ void apply_initial_shell_stresses(const core::Model& model,
       }
     }
   }
+}
+
+std::vector<double> initial_stress_energy(const core::Model& model,
+                                          const std::vector<element::ShellBlockState>& shells) {
+  std::vector<double> energy(model.shell_blocks.size(), 0.0);
+  for (const core::InitialShellStress& s : model.initial_shell_stresses) {
+    const auto b = static_cast<std::size_t>(s.shell.block);
+    const auto e = static_cast<std::size_t>(s.shell.element);
+    const core::ShellBlock& blk = model.shell_blocks[b];
+    const element::ShellBlockState& st = shells[b];
+    const core::Material& m = model.materials[static_cast<std::size_t>(blk.material)];
+    const double k = material::bulk_modulus(m), g = material::shear_modulus(m);
+    const double young = 9.0 * k * g / (3.0 * k + g),
+                 nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+    const auto nip = static_cast<std::size_t>(st.nip);
+    std::vector<double> zeta(nip), weight(nip);
+    element::thickness_rule(blk.rule, st.nip, zeta.data(), weight.data());
+    // Each point's share of the volume: the weights sum to 2 through the thickness, and the
+    // in-plane points share the area equally.
+    const double volume = st.area[e] * st.thickness[e] / (2.0 * st.inplane);
+    for (std::size_t gp = 0; gp < static_cast<std::size_t>(st.inplane); ++gp)
+      for (std::size_t kp = 0; kp < nip; ++kp) {
+        const std::size_t q = e * st.points_per_element() + gp * nip + kp;
+        const double sxx = st.s[0][q], syy = st.s[1][q], sxy = st.s[2][q];
+        const double in_plane =
+            (sxx * sxx + syy * syy - 2.0 * nu * sxx * syy + 2.0 * (1.0 + nu) * sxy * sxy) /
+            (2.0 * young);
+        const double shear = (st.s[3][q] * st.s[3][q] + st.s[4][q] * st.s[4][q]) / (2.0 * g);
+        energy[b] += weight[kp] * volume * (in_plane + shear);
+      }
+  }
+  return energy;
 }
 
 }  // namespace plyform::engine

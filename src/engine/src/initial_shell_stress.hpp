@@ -24,4 +24,15 @@ namespace plyform::engine {
 void apply_initial_shell_stresses(const core::Model& model,
                                   std::vector<element::ShellBlockState>& shells);
 
+/// The elastic energy the initial stresses hold, per shell block (length 0 entries for blocks
+/// without): at each point sigma : C^-1 : sigma / 2 of plane stress with the law's elastic
+/// constants (E and nu from its bulk and shear moduli: exact for the isotropic elasticity of the
+/// metal laws, an estimate for orthotropic ones), plus the transverse shears' tau^2 / (2 G),
+/// times the point's share of the element's volume (its area after the first element pass
+/// times its thickness and the point's weight). The engine books it as the internal energy of
+/// t = 0: a formed part handed on holds it, and gives it back when it springs back, which the
+/// energy balance would otherwise read as energy from nowhere (docs/energy.md).
+std::vector<double> initial_stress_energy(const core::Model& model,
+                                          const std::vector<element::ShellBlockState>& shells);
+
 }  // namespace plyform::engine

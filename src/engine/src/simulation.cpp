@@ -224,6 +224,10 @@ struct Simulation::State {
   // per block stress work and hourglass energy (the warnings name the part).
   double pending_external = 0.0;
   double kinetic0 = 0.0;
+  // The elastic energy of *INITIAL_STRESS_SHELL's stresses (a formed part handed on): the
+  // internal energy of t = 0, part of the energy the model starts with. Not in the checkpoint:
+  // the deck (the same for a restart) determines it.
+  double stored0 = 0.0;
   double hourglass = 0.0;
   double internal_energy = 0.0;
   double work_external = 0.0;
@@ -478,6 +482,15 @@ void Simulation::State::set_up_run() {
     fail(failure_text(ir) + " in the initial mesh");
     return;
   }
+  // The initial stresses' energy, on the areas the first pass found.
+  if (!model.initial_shell_stresses.empty()) {
+    const std::vector<double> stored = initial_stress_energy(model, shells);
+    for (std::size_t b = 0; b < stored.size(); ++b) {
+      shell_books[b][0] += stored[b];
+      stored0 += stored[b];
+    }
+    internal_energy += stored0;
+  }
   tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
   // Without deformable elements (rigid bodies only) nothing bounds the step: DTINIT sets it.
   fixed_step = !(ir.dt_min < 1e300);
@@ -538,7 +551,7 @@ void Simulation::State::set_up_run() {
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
   fix_rotations();
   kinetic0 = kinetic();
-  energy_scale = std::abs(kinetic0);
+  energy_scale = std::abs(kinetic0) + stored0;
   for (const auto& b : model.solid_blocks)
     heat_works = heat_works || !b.expansion.x.empty();
   for (const auto& b : model.shell_blocks)
@@ -1086,7 +1099,7 @@ Energies Simulation::State::measure_energies() {
   // work is taken back out (a block compressed and released: the demo read 1.045 with every
   // book right). The error is measured against the most energy that entered instead, which
   // is the same ratio while that energy grows (docs/energy.md).
-  const double reference = kinetic0 + work_external;
+  const double reference = kinetic0 + stored0 + work_external;
   energy_scale = std::max(energy_scale, std::abs(reference));
   e.ratio = energy_scale > 0.0 ? 1.0 + (e.total - reference) / energy_scale : 1.0;
   internal_peak = std::max(internal_peak, e.internal);
@@ -1146,7 +1159,8 @@ void Simulation::State::settle_contact_verdict() {
 void Simulation::State::check_books(const Energies& e, bool last) {
   // Energies at round-off (a model at rest, the first outputs) say nothing: the hourglass
   // book is judged once it is a millionth of the energy that entered the model.
-  const double entered = std::max(energy_scale, std::abs(kinetic0) + std::abs(e.external_work));
+  const double entered =
+      std::max(energy_scale, std::abs(kinetic0) + stored0 + std::abs(e.external_work));
   // Against the largest internal energy of the run: the present one passes through zero when
   // a released part gives its energy back (the demo's block warned at 11 % of round-off), and
   // is negative early in a thermal run (thermal contraction's stress work).
@@ -1258,11 +1272,12 @@ bool Simulation::State::books_in_band() {
   fail(fmt::format(
       "the energy ratio {:.6g} left the band 1 +- {:.3g}{} at t = {} (cycle {}): total {:.6g} "
       "(kinetic {:.6g}, internal {:.6g}, hourglass {:.6g}, contact {:.6g}) against {:.6g} that "
-      "entered (initial kinetic {:.6g}, external work {:.6g}); the fastest node is {} at "
+      "entered (initial kinetic {:.6g}, initial stresses {:.6g}, external work {:.6g}); the "
+      "fastest node is {} at "
       "{:.4g}: the model gains energy it was not given (docs/energy.md)",
       e.ratio, band, limit > 0.0 ? " (*CONTROL_TERMINATION ENDENG)" : "", time_text(t), cycle,
-      e.total, e.kinetic, e.internal, e.hourglass, e.contact, kinetic0 + e.external_work, kinetic0,
-      e.external_work, model.node_id[fastest], std::sqrt(std::max(speed, 0.0))));
+      e.total, e.kinetic, e.internal, e.hourglass, e.contact, kinetic0 + stored0 + e.external_work,
+      kinetic0, stored0, e.external_work, model.node_id[fastest], std::sqrt(std::max(speed, 0.0))));
   return false;
 }
 
