@@ -54,8 +54,8 @@ struct PiecewiseLinearPlasticity {
   /// increasing; the natural logarithm of the rate when the first is negative, LS-DYNA's
   /// convention), read linearly between the two curves around a point's rate sqrt(D : D) and
   /// as the first or last curve outside them. Empty: none (curve and rates above).
-  std::vector<double> rate_values;
-  std::vector<HardeningCurve> rate_curves;
+  std::vector<double> rate_values{};
+  std::vector<HardeningCurve> rate_curves{};
   bool log_rates = false;
 };
 
