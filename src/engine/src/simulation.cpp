@@ -267,6 +267,9 @@ struct Simulation::State {
   double wall_before = 0.0;  // wall seconds of the runs before a restart
   int reductions_before = 0;
   double reduced_before = 0.0;
+  // The checkpoint a run writes at its end: the cycle boundary before the step that lands on
+  // the end time (keep_end_records).
+  core::StateArchive::Records end_records;
   RunResult res;
 
   // ---- Timing (pass_clock.hpp) -----------------------------------------------------------------
@@ -343,6 +346,8 @@ struct Simulation::State {
   unsigned written = 0;
   core::StateArchive::Records checkpoint_records();
   void write_checkpoint();
+  void write_checkpoint(const core::StateArchive::Records& records);
+  void keep_end_records();
   [[nodiscard]] Snapshot snapshot() const;
   void fail(const std::string& why);
   [[nodiscard]] std::string element_name(const WorkItem& it, std::size_t e) const;
@@ -1801,9 +1806,30 @@ core::StateArchive::Records Simulation::State::checkpoint_records() {
 }
 
 void Simulation::State::write_checkpoint() {
-  engine::write_checkpoint(options.checkpoint, options.fingerprint, checkpoint_records());
+  write_checkpoint(checkpoint_records());
+}
+
+void Simulation::State::write_checkpoint(const core::StateArchive::Records& records) {
+  engine::write_checkpoint(options.checkpoint, options.fingerprint, records);
   ++res.checkpoints;
   res.checkpoint = options.checkpoint.string();
+}
+
+// The state a restart past the end (--end-time) goes on from, kept when the coming step lands
+// on the end time: that step's own velocity pass holds the prescribed motions over a sliver
+// step (step_vote), which gives the end time's velocities to its books but is no step a longer
+// run takes. A restart from the end itself went on with those held velocities, the rigid
+// bodies already advanced by them, and the curves read from the sliver: the square cup's punch
+// stopped at once and the books of the extension broke (ratio 0.86 where the continuous run
+// to the same time keeps 0.99999). From this boundary the restart takes the last step again,
+// as a longer run would, and its files are cut back to it (the extension then follows the
+// continuous run within 1 % in its energies; its books end at 0.958: the punch's stop at the
+// old end still books 17 mJ of work less, an open defect).
+void Simulation::State::keep_end_records() {
+  if (options.checkpoint.empty() || options.checkpoint_cycles <= 0 || end_time <= 0.0)
+    return;
+  if (end_records.empty() && t + dt + eps_t >= end_time)
+    end_records = checkpoint_records();
 }
 
 // ---- Simulation -----------------------------------------------------------------------------
@@ -1849,6 +1875,8 @@ RunResult Simulation::run() {
       break;
     if (st.model.controls.end_cycle > 0 && st.cycle >= st.model.controls.end_cycle)
       break;
+    if (!st.thermal_only)
+      st.keep_end_records();
     if (!(st.thermal_only ? st.thermal_cycle_once(watch) : st.cycle_once(watch)))
       break;
     st.write_outputs(false);
@@ -1881,9 +1909,14 @@ RunResult Simulation::run() {
     // The end state for the files written once (dynain), on the end's positions.
     st.sync();
     st.sink.end_of_run(st.snapshot());
-    // The end's checkpoint lets a restart go on past the end time (--end-time).
-    if (checkpoints && st.options.checkpoint_cycles > 0)
-      st.write_checkpoint();
+    // The end's checkpoint lets a restart go on past the end time (--end-time): the state
+    // before the last step where one was kept (keep_end_records).
+    if (checkpoints && st.options.checkpoint_cycles > 0) {
+      if (st.end_records.empty())
+        st.write_checkpoint();
+      else
+        st.write_checkpoint(st.end_records);
+    }
   }
   res.cycles = st.cycle;
   res.time = st.t;

@@ -23,9 +23,11 @@ refuse    restarts that must not happen, each exit code 1 with a message saying 
           outputs left as they were: no checkpoint; a checkpoint of another deck (one comment
           line added to it); a truncated one; one with a flipped byte (checksum); another format
           version; a file that is no checkpoint.
-end_time  DECK run to its end (a checkpoint is written there), then restarted with --end-time
-          1.5 times as late: glstat.csv's times increase strictly from the first row to the
-          new end, and summary.json reports the new end time and the restart time.
+end_time  DECK run to its end (its checkpoint is the state before the step that lands there),
+          then restarted with --end-time 1.5 times as late: glstat.csv's times increase
+          strictly from the first row to the new end, summary.json reports the new end time
+          and the restart time (the last step's start), and the extension keeps its energy
+          books (normal termination, nothing distrusted).
 
 Exit status: 0 pass, 1 fail. Standard library only.
 """
@@ -220,13 +222,17 @@ def mode_end_time(plyform, deck, outdir):
     if not check(r.returncode == 0, f"run: exit {r.returncode}: {r.stderr}"):
         return
     with open(os.path.join(part, "summary.json")) as f:
-        end = json.load(f)["final_time"]
+        first = json.load(f)
+    end, last_step = first["final_time"], first["dt_final"]
     r = run(plyform, deck, part, "--restart", "--end-time", repr(1.5 * end))
-    # Known defect: past the deck's end the square cup's punch, whose curve ends there, stops at
-    # once, and the books of that stop break (the ratio 17 % off): the extension completes with
-    # its results not to be trusted (exit 5). What this test checks is the restart's files.
-    allowed = (0, 5) if os.path.basename(deck).startswith("restart_shell") else (0,)
-    if not check(r.returncode in allowed, f"restart past the end: exit {r.returncode}: {r.stderr}"):
+    # Not a regression: the extension keeps its energy books within their band (conservation
+    # of energy). The end's checkpoint is the state before the step that landed on the end:
+    # that step's velocities are held for the end's books, and a restart from them stopped the
+    # square cup's punch at once (the ratio 0.86, exit 5). Now the extension's kinetic,
+    # internal and contact energies follow the run made to the new end in one go within 1 %,
+    # but its books end at 0.958 where that run's end at 0.99999: the stop of the punch at the
+    # old end books 17 mJ less negative work (a known defect, issue 28).
+    if not check(r.returncode == 0, f"restart past the end: exit {r.returncode}: {r.stderr}"):
         return
     with open(os.path.join(part, "glstat.csv")) as f:
         times = [float(line.split(",")[0]) for line in list(f)[1:]]
@@ -238,7 +244,11 @@ def mode_end_time(plyform, deck, outdir):
         s = json.load(f)
     check(abs(s["final_time"] - 1.5 * end) <= 1e-9 * end and s["end_time"] == 1.5 * end,
           f"summary.json: final {s['final_time']}, end {s['end_time']}, not {1.5 * end}")
-    check(s["restarted_at"] == end, f"summary.json: restarted_at {s['restarted_at']} != {end}")
+    check(abs(s["restarted_at"] + last_step - end) <= 1e-9 * end,
+          f"summary.json: restarted_at {s['restarted_at']} is not the last step's start "
+          f"{end} - {last_step}")
+    check(s["status"] == "normal termination" and not s["distrust"],
+          f"restart past the end: {s['status']}: {s['distrust']}")
 
 
 def main(argv):
