@@ -225,13 +225,13 @@ def mode_end_time(plyform, deck, outdir):
         first = json.load(f)
     end, last_step = first["final_time"], first["dt_final"]
     r = run(plyform, deck, part, "--restart", "--end-time", repr(1.5 * end))
-    # Not a regression: the extension keeps its energy books within their band (conservation
-    # of energy). The end's checkpoint is the state before the step that landed on the end:
-    # that step's velocities are held for the end's books, and a restart from them stopped the
-    # square cup's punch at once (the ratio 0.86, exit 5). Now the extension's kinetic,
-    # internal and contact energies follow the run made to the new end in one go within 1 %,
-    # but its books end at 0.958 where that run's end at 0.99999: the stop of the punch at the
-    # old end books 17 mJ less negative work (a known defect, issue 28).
+    # Not a regression: the extension keeps its energy books (conservation of energy), as the
+    # run made to the new end in one go does (0.99999). The end's checkpoint is the state
+    # before the step that landed on the end: that step's velocities are held for the end's
+    # books, and a restart from them stopped the square cup's punch at once (the ratio 0.86,
+    # exit 5); from the right state, the punch's stop after the short landing step booked
+    # 17 mJ of its 69 too little on the steps' halves (0.958) until a body's reaction worked
+    # on dt_avg each side.
     if not check(r.returncode == 0, f"restart past the end: exit {r.returncode}: {r.stderr}"):
         return
     with open(os.path.join(part, "glstat.csv")) as f:
@@ -249,6 +249,15 @@ def mode_end_time(plyform, deck, outdir):
           f"{end} - {last_step}")
     check(s["status"] == "normal termination" and not s["distrust"],
           f"restart past the end: {s['status']}: {s['distrust']}")
+    if os.path.basename(deck).startswith("restart_thermal"):
+        # The thermal block's books end 3 % off in the run to the end as well (1.029; the
+        # thermal work's book, an open item of issue 28): the extension adds nothing to that.
+        check(abs(s["energy_ratio"] - first["energy_ratio"]) <= 0.005,
+              f"restart past the end: energy ratio {s['energy_ratio']}, not the run to the "
+              f"end's {first['energy_ratio']} +- 0.005")
+    else:
+        check(abs(s["energy_ratio"] - 1.0) <= 0.005,
+              f"restart past the end: energy ratio {s['energy_ratio']}, not 1 +- 0.005")
 
 
 def main(argv):
