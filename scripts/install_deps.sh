@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build ccache gfortran clang-format
-  libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcli11-dev libeigen3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcli11-dev libeigen3-dev libmetis-dev
   python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
 )
 

@@ -13,7 +13,9 @@
 #include <string>
 #include <variant>
 
+#include "decomposition_report.hpp"
 #include "plyform/app/commands.hpp"
+#include "plyform/domain/decomposition.hpp"
 #include "plyform/engine/initial_contact_step.hpp"
 #include "plyform/engine/initial_step.hpp"
 #include "plyform/keyword/read_deck.hpp"
@@ -446,7 +448,7 @@ void print_interface_warnings(const core::Model& m, std::ostream& err) {
 
 }  // namespace
 
-int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err) {
+int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err, int ranks) {
   const keyword::ReadResult read = keyword::read_deck(deck);
   for (const auto& w : read.warnings)
     fmt::print(err, "warning: {}\n", w.to_string());
@@ -500,6 +502,19 @@ int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream
     fmt::print(out, "advice: {}\n", a.message);
   if (built)
     print_interface_warnings(*built->model, err);
+  if (ranks > 1) {
+    if (!built) {
+      fmt::print(err, "error: {}: --ranks {}: the deck has no mesh to split\n", deck.string(),
+                 ranks);
+      return 1;
+    }
+    const domain::DecomposeResult split = domain::decompose(*built->model, ranks);
+    if (!split.error.empty()) {
+      fmt::print(err, "error: {}: --ranks {}: {}\n", deck.string(), ranks, split.error);
+      return 1;
+    }
+    print_decomposition(*built->model, split.decomposition, out);
+  }
   return 0;
 }
 

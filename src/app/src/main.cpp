@@ -34,6 +34,12 @@ int main(int argc, char** argv) {
   std::filesystem::path check_deck;
   CLI::App* check = app.add_subcommand("check", "Read and validate a deck; print a summary");
   check->add_option("DECK", check_deck, "keyword deck (.k)")->required();
+  int check_ranks = 1;
+  check
+      ->add_option("--ranks", check_ranks,
+                   "also print the split of the model over this many MPI ranks (METIS): each "
+                   "domain's elements, nodes, shared nodes, contact slave nodes, ghost segments")
+      ->check(CLI::Range(1, 1 << 20));
 
   std::filesystem::path plot_dir;
   CLI::App* plot = app.add_subcommand(
@@ -141,7 +147,7 @@ int main(int argc, char** argv) {
     return plyform::app::run_deck(run, std::cout, std::cerr);
   }
   if (check->parsed())
-    return plyform::app::run_check(check_deck, std::cout, std::cerr);
+    return plyform::app::run_check(check_deck, std::cout, std::cerr, check_ranks);
   if (plot->parsed() && plot_fld) {
     fld.outdir = plot_dir;
     if (*flc_opt)

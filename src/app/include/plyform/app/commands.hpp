@@ -68,8 +68,11 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 /// always has), else 1.
 RunOptions with_deck_threads(RunOptions options, const model::ModelDesc& deck);
 
-/// `plyform check DECK.k`
-int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err);
+/// `plyform check DECK.k [--ranks N]`: with N > 1 also the split of the model over N MPI ranks
+/// (domain/decomposition.hpp): each domain's elements, nodes, shared nodes, contact slave nodes
+/// and ghost segments, and the imbalance.
+int run_check(const std::filesystem::path& deck, std::ostream& out, std::ostream& err,
+              int ranks = 1);
 
 /// `plyform plot OUTDIR`: runs scripts/plot_histories.py with /usr/bin/python3 (overrides:
 /// $PLYFORM_SCRIPTS_DIR, $PLYFORM_PYTHON), which writes energies.png from glstat.csv and
