@@ -42,7 +42,7 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
   // Bulk viscosity of the membrane (TYPE -1/-2): its pressure and the compression rate.
   const bool bulk_on =
       block.bulk_viscosity_on && (block.bulk_viscosity.q1 != 0.0 || block.bulk_viscosity.q2 != 0.0);
-  double bulk_q[kChunk], bulk_rate[kChunk], tk[kChunk], work_old[kChunk];
+  double bulk_q[kChunk], tk[kChunk], work_old[kChunk];
   alignas(64) double B1[4][kChunk], B2[4][kChunk], RATE[9][kChunk];
   alignas(64) double MSPIN[kChunk], FTURN[kChunk];
   for (std::size_t c0 = begin; c0 < end; c0 += kChunk) {
@@ -135,7 +135,6 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           const double qv =
               block.bulk_viscosity.q1 * l * rate + block.bulk_viscosity.q2 * wave_speed;
           bulk_q[k_el] = rho * l * qv * rate;
-          bulk_rate[k_el] = rate;
           dte = st.dt_factor[e] * f.length[k_el] /
                 (qv + std::sqrt(qv * qv + wave_speed * wave_speed));
         }
@@ -191,13 +190,25 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       const double mid_volume =
           t * (1.0 + 0.5 * tz) * a * (1.0 - 0.5 * dt * (RATE[0][k_el] + RATE[1][k_el]));
       r.internal_energy += 0.5 * (work_old[k_el] + cs.work[0]) * 0.5 * mid_volume;
-      if (bulk_q[k_el] > 0.0) {
+      const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+      double p_start = work_old[k_el] * 0.5 * mid_volume * inv_dt;
+      double p_end = cs.work[0] * 0.5 * mid_volume * inv_dt;
+      if (bulk_on) {
         // The pressure over the thickness acts on the membrane only (not stored in the
-        // stresses); its work q |tr D| t A dt is internal energy.
+        // stresses); its work is internal energy, by the stresses' midpoint rule: the pressures
+        // of t_n and t_{n+1} on the step's rate |tr D| t A (element/solid_kernels.cpp says why).
+        double& q_old = st.bulk_q[e];
+        const double rate = -(RATE[0][k_el] + RATE[1][k_el]);
+        const double w0 = q_old * rate * t * a, w1 = bulk_q[k_el] * rate * t * a;
+        r.internal_energy += 0.5 * (w0 + w1) * dt;
+        p_start += w0;
+        p_end += w1;
+        q_old = bulk_q[k_el];
         nxx -= bulk_q[k_el] * t;
         nyy -= bulk_q[k_el] * t;
-        r.internal_energy += bulk_q[k_el] * bulk_rate[k_el] * t * a * dt;
       }
+      r.start_power += p_start;
+      r.end_power += p_end;
       st.thickness[e] = t * (1.0 + tz);
       if (plastic_heat)
         spread_plastic_work(conn, cs.plastic[0] * 0.5 * t * a, out);
@@ -244,15 +255,18 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           const double kw = qm * e_plate * t * t * t * bb / 24.0;
           const double kr = qm * e_plate * t * t * t * a * bb / 192.0;
           const double k[5] = {km, km, kw, kr, kr};
-          double power = 0.0;
+          double p0 = 0.0, p1 = 0.0;
           for (int j = 0; j < 5; ++j) {
             double& qj = st.hourglass[j][e];
             const double q_new = qj + k[j] * qv[j] * dt;
-            power += 0.5 * (qj + q_new) * qv[j];
+            p0 += qj * qv[j];
+            p1 += q_new * qv[j];
             qj = q_new;
             coef[j] = q_new;
           }
-          r.hourglass_energy += power * dt;
+          r.hourglass_energy += 0.5 * (p0 + p1) * dt;
+          r.hourglass_start_power += p0;
+          r.hourglass_end_power += p1;
           for (int i = 0; i < 4; ++i) {
             fl[i][0] += coef[0] * gam[i];
             fl[i][1] += coef[1] * gam[i];
@@ -264,10 +278,18 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
           coef[0] = coef[1] = 0.25 * qm * rho * wave_speed * t * sa;
           coef[2] = qm * rho * wave_speed * t * t * t / (12.0 * sa);
           coef[3] = coef[4] = qm * rho * wave_speed * t * t * t * sa / 48.0;
-          double power = 0.0;
-          for (int j = 0; j < 5; ++j)
-            power += coef[j] * qv[j] * qv[j];
-          r.hourglass_energy += power * dt;
+          // The modes' last forces are kept for the midpoint rule of their work, as the
+          // stiffness form's (a viscous force from the step's rate acts at t_{n+1}).
+          double p0 = 0.0, p1 = 0.0;
+          for (int j = 0; j < 5; ++j) {
+            double& qj = st.hourglass[j][e];
+            p0 += qj * qv[j];
+            qj = coef[j] * qv[j];
+            p1 += qj * qv[j];
+          }
+          r.hourglass_energy += 0.5 * (p0 + p1) * dt;
+          r.hourglass_start_power += p0;
+          r.hourglass_end_power += p1;
           for (int i = 0; i < 4; ++i) {
             fl[i][0] += coef[0] * qv[0] * gam[i];
             fl[i][1] += coef[1] * qv[1] * gam[i];
@@ -343,7 +365,8 @@ void ShellBlockState::resize(const core::ShellBlock& block, std::size_t history_
   dt_factor.assign(n, 1.0);
   area.assign(n, 0.0);
   for (auto& q : hourglass)
-    q.assign(block.hourglass.ihq >= 4 && inplane == 1 ? n : 0, 0.0);
+    q.assign(inplane == 1 ? n : 0, 0.0);
+  bulk_q.assign(n * inplane, 0.0);
 }
 
 ShellResult shell_forces(const core::ShellBlock& block, const core::Material& material,

@@ -224,6 +224,7 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       const double tz = cs.tz;
       double fl[4][3] = {}, ml[4][2] = {};
       double wp = 0.0;
+      const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
       for (std::size_t gp = 0; gp < 4; ++gp) {
         double nxx = cs.nxx[gp], nyy = cs.nyy[gp];
         const double nxy = cs.nxy[gp], mxx = cs.mxx[gp], myy = cs.myy[gp], mxy = cs.mxy[gp];
@@ -233,10 +234,19 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         // Midpoint rule on the point's mid-step volume, as the BT kernel books its one point.
         const double mid_volume = t * (1.0 + 0.5 * tz) * da * (1.0 - 0.5 * dt * DIL[gp][k_el]);
         r.internal_energy += 0.5 * (work_old[k_el][gp] + cs.work[gp]) * 0.5 * mid_volume;
-        if (bulk_q[k_el][gp] > 0.0) {
+        r.start_power += work_old[k_el][gp] * 0.5 * mid_volume * inv_dt;
+        r.end_power += cs.work[gp] * 0.5 * mid_volume * inv_dt;
+        if (bulk_on) {
+          // The midpoint rule of the BT kernel's bulk viscosity, at each point.
+          double& q_old = st.bulk_q[4 * e + gp];
+          const double rate = -DIL[gp][k_el];
+          const double w0 = q_old * rate * t * da, w1 = bulk_q[k_el][gp] * rate * t * da;
+          r.internal_energy += 0.5 * (w0 + w1) * dt;
+          r.start_power += w0;
+          r.end_power += w1;
+          q_old = bulk_q[k_el][gp];
           nxx -= bulk_q[k_el][gp] * t;
           nyy -= bulk_q[k_el][gp] * t;
-          r.internal_energy += bulk_q[k_el][gp] * (-DIL[gp][k_el]) * t * da * dt;
         }
         for (int i = 0; i < 4; ++i) {
           const double nx = BX[i][gp][k_el], ny = BY[i][gp][k_el];

@@ -220,6 +220,20 @@ struct BulkQ {
 // 7 times its thickness, the viscous stress then damps the element's thickness mode 7 times more
 // than the step L / (Q + sqrt(Q^2 + c^2)) allows for, and a free bar of such elements went
 // unstable (tests/verification/solid/test_bulk_viscosity.cpp).
+// An element's stress work over the step from its powers at the step's two ends, sigma_n : D V
+// and sigma_{n+1} : D V (D the step's rate, the stresses with the bulk viscosity's pressure q,
+// which the forces carry from one update to the next like the stress): the midpoint rule
+// (sigma_n + sigma_{n+1}) / 2 : D V dt, and both powers for the engine's correction of the steps'
+// lengths (engine/simulation.cpp, `step_power_correction`). Booked as q_{n+1} alone on the step's
+// rate, the bulk viscosity's work ran a step ahead of its forces where the rate jumps: a wall
+// striking a bar at rest read 1.07 at the first cycles, and a block's face heated by 200 K at
+// once 1.03 at the end (tests/verification/engine/test_viscosity_books.cpp).
+inline void step_powers(SolidResult& r, double start, double end, double dt) {
+  r.internal_energy += 0.5 * (start + end) * dt;
+  r.start_power += start;
+  r.end_power += end;
+}
+
 inline double bulk_length(double volume, double step_length) {
   return std::min(std::cbrt(volume), std::sqrt(3.0) * step_length);
 }
@@ -238,14 +252,14 @@ void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLan
                       const NodeLanes& VZ, const NodeLanes& BX, const NodeLanes& BY,
                       const NodeLanes& BZ, const double (&L)[9][kLanes], const Lanes& vol,
                       const Lanes& bsq, double (&HG)[12][kLanes], double (&F)[3][8][kLanes],
-                      Lanes& power) {
+                      Lanes& power_start, Lanes& power_end) {
   // Loops are ordered with the lane index innermost, so each one vectorises across elements.
   alignas(64) double coeff[kLanes], hx[kLanes], hy[kLanes], hz[kLanes];
   alignas(64) double q[3][kLanes], r[3][kLanes];
   for (std::size_t k = 0; k < kLanes; ++k) {
     coeff[k] = kStiffness ? 0.25 * scale * (2.0 / 3.0) * vol[k] * bsq[k]
                           : 0.25 * scale * vol[k] * std::sqrt(2.0 * bsq[k] / 3.0);
-    power[k] = 0.0;
+    power_start[k] = power_end[k] = 0.0;
   }
   for (int a = 0; a < 4; ++a) {
     for (std::size_t k = 0; k < kLanes; ++k) {
@@ -263,23 +277,31 @@ void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLan
       }
     }
     for (std::size_t k = 0; k < kLanes; ++k) {
-      double pw = 0.0;
+      double p0 = 0.0, p1 = 0.0;
       for (int d = 0; d < 3; ++d) {
         const double qd =
             q[d][k] - (hx[k] * L[3 * d][k] + hy[k] * L[3 * d + 1][k] + hz[k] * L[3 * d + 2][k]);
+        double& h = HG[3 * a + d][k];
         double rd;
+        // Booked as the stress is, by the midpoint rule: the forces of t_n and t_{n+1} on the
+        // step's rate (the stiffness form: exactly the change of the stored k HG^2 / 2).
         if constexpr (kStiffness) {
-          // Booked at the step's midpoint: exactly the change of the stored k HG^2 / 2.
-          HG[3 * a + d][k] += qd * dt;
-          rd = coeff[k] * HG[3 * a + d][k];
-          pw += coeff[k] * (HG[3 * a + d][k] - 0.5 * qd * dt) * qd;
+          p0 += coeff[k] * h * qd;
+          h += qd * dt;
+          rd = coeff[k] * h;
         } else {
+          // HG holds the mode's force of the last update: a viscous force is computed from the
+          // step's rate and acts at t_{n+1}; booked on that rate alone, it ran a step ahead of
+          // its forces where the rate jumps (a block's face heated by 200 K at once, 20 %).
+          p0 += h * qd;
           rd = coeff[k] * qd;
-          pw += rd * qd;
+          h = rd;
         }
+        p1 += rd * qd;
         r[d][k] = rd;
       }
-      power[k] += pw;
+      power_start[k] += p0;
+      power_end[k] += p1;
     }
     for (int i = 0; i < 8; ++i) {
       const double ha = kHourglass[a][i];
@@ -314,7 +336,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
   alignas(64) double BX[8][kLanes], BY[8][kLanes], BZ[8][kLanes];
   alignas(64) double F[3][8][kLanes];
   alignas(64) double L[9][kLanes], S[6][kLanes], HG[12][kLanes];
-  alignas(64) double vol[kLanes], bsq[kLanes], power[kLanes];
+  alignas(64) double vol[kLanes], bsq[kLanes], hg_start[kLanes], hg_end[kLanes];
   double temp[kLanes], eth[kLanes], eps0[kLanes], heat[kLanes];
   const bool thermal = !st.temperature.empty() && nv.temperature != nullptr;
   const bool expands = thermal && !block.expansion.x.empty();
@@ -464,17 +486,17 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
     }
     // Stress work of the step, midpoint rule: (sigma_n + sigma_{n+1}) / 2 : D dt V.
     // Component by component over the lanes (contiguous: vectorised).
-    double power_sum[kLanes] = {};
-    const auto add_power = [&] {
+    double power_start[kLanes] = {}, power_end[kLanes] = {};  // sigma_n : D, sigma_{n+1} : D
+    const auto add_power = [&](double* into) {
       for (int c = 0; c < 6; ++c) {
         const double w = c < 3 ? 1.0 : 2.0;  // tensor shears count twice
         const double* sc = &st.s[c][c0];
         const double* dc = s.d[c];
         for (std::size_t k = 0; k < n; ++k)
-          power_sum[k] += w * sc[k] * dc[k];
+          into[k] += w * sc[k] * dc[k];
       }
     };
-    add_power();
+    add_power(power_start);
     // Thermal expansion: the law sees the mechanical rate D - alpha dT/dt I; the stress work
     // counts the total rate (the forces do that work).
     if (thermal) {
@@ -496,10 +518,14 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         s.d[2][k] += eth[k];
       }
     }
-    add_power();
+    add_power(power_end);
     for (std::size_t k = 0; k < n; ++k) {
-      const double bulk_power = -bulk_q[k] * (s.d[0][k] + s.d[1][k] + s.d[2][k]);
-      r.internal_energy += (0.5 * power_sum[k] + bulk_power) * vol[k] * s.jm[k] * dt;
+      // The bulk viscosity's pressure is part of the stress the forces carry (step_powers).
+      double& q_old = st.bulk_q[c0 + k];
+      const double trace = s.d[0][k] + s.d[1][k] + s.d[2][k], scale = vol[k] * s.jm[k];
+      step_powers(r, (power_start[k] - q_old * trace) * scale,
+                  (power_end[k] - bulk_q[k] * trace) * scale, dt);
+      q_old = bulk_q[k];
     }
     if (plastic_heat) {
       for (std::size_t k = 0; k < n; ++k) {
@@ -518,26 +544,23 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         F[1][i][k] = v * (S[3][k] * BX[i][k] + S[1][k] * BY[i][k] + S[4][k] * BZ[i][k]);
         F[2][i][k] = v * (S[5][k] * BX[i][k] + S[4][k] * BY[i][k] + S[2][k] * BZ[i][k]);
       }
-      power[k] = 0.0;
+      hg_start[k] = hg_end[k] = 0.0;
     }
     if (qm > 0.0) {
-      if (stiffness_hg) {
-        for (std::size_t k = 0; k < kLanes; ++k)
-          for (int j = 0; j < 12; ++j)
-            HG[j][k] = k < n ? st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] : 0.0;
-      }
+      // The stiffness form's hourglass displacements, or the viscous form's last forces.
+      for (std::size_t k = 0; k < kLanes; ++k)
+        for (int j = 0; j < 12; ++j)
+          HG[j][k] = k < n ? st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] : 0.0;
       if (stiffness_hg) {
         hourglass_forces<true>(qm * modulus, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq, HG,
-                               F, power);
+                               F, hg_start, hg_end);
       } else {
         hourglass_forces<false>(qm * rho * c_wave, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq,
-                                HG, F, power);
+                                HG, F, hg_start, hg_end);
       }
-      if (stiffness_hg) {
-        for (std::size_t k = 0; k < n; ++k)
-          for (int j = 0; j < 12; ++j)
-            st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] = HG[j][k];
-      }
+      for (std::size_t k = 0; k < n; ++k)
+        for (int j = 0; j < 12; ++j)
+          st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] = HG[j][k];
     }
     for (std::size_t k = 0; k < n; ++k) {
       const core::Index* e = conn + 8 * (c0 + k);
@@ -549,7 +572,9 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         if (plastic_heat)
           out.plastic_work[node] += heat[k];
       }
-      r.hourglass_energy += power[k] * dt;
+      r.hourglass_energy += 0.5 * (hg_start[k] + hg_end[k]) * dt;
+      r.hourglass_start_power += hg_start[k];
+      r.hourglass_end_power += hg_end[k];
     }
   }
   return r;
@@ -632,18 +657,18 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         r.dt_element = e;
       }
     }
-    double power_sum[kChunk] = {};
+    double power_start[kChunk] = {}, power_end[kChunk] = {};
     const std::size_t np = 8 * n;
-    const auto add_power = [&] {
+    const auto add_power = [&](double* into) {
       for (int c = 0; c < 6; ++c) {
         const double w = c < 3 ? 1.0 : 2.0;  // tensor shears count twice
         const double* sc = &st.s[c][8 * c0];
         const double* dc = s.d[c];
         for (std::size_t p = 0; p < np; ++p)
-          power_sum[p] += w * sc[p] * dc[p];
+          into[p] += w * sc[p] * dc[p];
       }
     };
-    add_power();
+    add_power(power_start);
     if (thermal) {  // as one_point, the element's temperature at its 8 points
       for (std::size_t k = 0; k < n; ++k) {
         const double te =
@@ -667,11 +692,20 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         s.d[2][p] += eth[p / 8];
       }
     }
-    add_power();
-    for (std::size_t p = 0; p < np; ++p)
-      r.internal_energy += 0.5 * power_sum[p] * gg[p / 8].weight_det[p % 8] * s.jm[p] * dt;
-    for (std::size_t k = 0; k < n; ++k)
-      r.internal_energy -= bulk_q[k] * bulk_trace[k] * mean[k].volume * mean_jm[k] * dt;
+    add_power(power_end);
+    for (std::size_t k = 0; k < n; ++k) {
+      double& q_old = st.bulk_q[c0 + k];
+      const double q_scale = bulk_trace[k] * mean[k].volume * mean_jm[k];
+      double p_start = -q_old * q_scale, p_end = -bulk_q[k] * q_scale;
+      for (std::size_t q = 0; q < 8; ++q) {
+        const std::size_t p = 8 * k + q;
+        const double scale = gg[k].weight_det[q] * s.jm[p];
+        p_start += power_start[p] * scale;
+        p_end += power_end[p] * scale;
+      }
+      step_powers(r, p_start, p_end, dt);
+      q_old = bulk_q[k];
+    }
 
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t e = c0 + k;
@@ -727,6 +761,7 @@ void SolidBlockState::resize(const core::SolidBlock& block, std::size_t history_
   eps_p.assign(n * static_cast<std::size_t>(points), 0.0);
   history.assign(n * static_cast<std::size_t>(points) * history_per_point, 0.0);
   hourglass.assign(n * 12, 0.0);
+  bulk_q.assign(n, 0.0);
   volume.assign(n, 0.0);
   dt_factor.assign(n, 1.0);
 }

@@ -39,10 +39,14 @@ struct ShellBlockState {
   std::vector<double> thickness;  ///< per element
   std::vector<double> dt_factor;  ///< mass scaling, as for solids
   std::vector<double> area;       ///< current area per element
-  /// Stiffness hourglass control (IHQ 4-5): the generalised hourglass forces of the element's
-  /// four modes in its co-rotational frame (membrane x, y; out of plane; rotations x, y),
-  /// accumulated from their rates. Empty for the viscous forms.
+  /// The generalised hourglass forces of a BT element's four modes in its co-rotational frame
+  /// (membrane x, y; out of plane; rotations x, y): accumulated from their rates (stiffness
+  /// control, IHQ 4-5) or the last step's (viscous, IHQ 1-3: for the midpoint rule of their
+  /// work). Empty for ELFORM 16.
   std::vector<double> hourglass[5];
+  /// The membrane bulk viscosity's pressure of each in-plane point at its last update (its work
+  /// is booked by the midpoint rule, as the stress's).
+  std::vector<double> bulk_q;
 
   /// The law's own history (material::history_per_point values per point, point-major).
   std::vector<double> history;
@@ -59,7 +63,10 @@ struct ShellResult {
   double dt_min = 1e300;
   std::size_t dt_element = 0;
   double hourglass_energy = 0.0;
-  double internal_energy = 0.0;       ///< stress work of the step, from the elements' stresses
+  double internal_energy = 0.0;  ///< stress work of the step, from the elements' stresses
+  /// The range's stress power at the step's start and end (as SolidResult's).
+  double start_power = 0.0, end_power = 0.0;
+  double hourglass_start_power = 0.0, hourglass_end_power = 0.0;
   bool failed = false;                ///< a collapsed element (zero area or thickness)
   bool unsupported_material = false;  ///< failed: the material has no shell kernel
   std::size_t failed_element = 0;

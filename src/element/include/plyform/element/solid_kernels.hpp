@@ -45,9 +45,14 @@ struct NodalForces {
 struct SolidBlockState {
   int points = 1;  ///< integration points per element
   std::vector<double> s[6];
-  std::vector<double> eps_p;      ///< effective plastic strain per point (plasticity laws)
-  std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
-  std::vector<double> volume;     ///< current volume per element
+  std::vector<double> eps_p;  ///< effective plastic strain per point (plasticity laws)
+  /// 12 per element: the hourglass modes' displacements (IHQ 4/5) or their last forces
+  /// (viscous, IHQ 1-3: for the midpoint rule of their work).
+  std::vector<double> hourglass;
+  /// The bulk viscosity's pressure of each element's last update (its work is booked by the
+  /// midpoint rule, as the stress's).
+  std::vector<double> bulk_q;
+  std::vector<double> volume;  ///< current volume per element
   /// sqrt(scaled mass / physical mass) per element (mass scaling): the element's stable step
   /// grows by this factor. 1 without mass scaling.
   std::vector<double> dt_factor;
@@ -62,10 +67,16 @@ struct SolidBlockState {
 
 /// What a kernel call reports for its element range.
 struct SolidResult {
-  double dt_min = 1e300;              ///< smallest stable step of the range (without TSSFAC)
-  std::size_t dt_element = 0;         ///< element (index in the block) that sets it
-  double hourglass_energy = 0.0;      ///< hourglass work of this cycle
-  double internal_energy = 0.0;       ///< stress work of this cycle, from the elements' stresses
+  double dt_min = 1e300;          ///< smallest stable step of the range (without TSSFAC)
+  std::size_t dt_element = 0;     ///< element (index in the block) that sets it
+  double hourglass_energy = 0.0;  ///< hourglass work of this cycle
+  double internal_energy = 0.0;   ///< stress work of this cycle, from the elements' stresses
+  /// The range's stress power at the step's start and end, sum of sigma_n : D V and of
+  /// sigma_{n+1} : D V over its elements (D the step's rate): the engine books each stress on
+  /// the mean of the two steps around it (docs/energy.md).
+  double start_power = 0.0, end_power = 0.0;
+  /// The same of the hourglass forces (their own book).
+  double hourglass_start_power = 0.0, hourglass_end_power = 0.0;
   bool failed = false;                ///< a non-positive volume or Jacobian
   bool unsupported_material = false;  ///< failed: the material has no solid kernel
   std::size_t failed_element = 0;
