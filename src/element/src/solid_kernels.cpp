@@ -281,21 +281,21 @@ void hourglass_forces(double scale, double dt, const NodeLanes& X, const NodeLan
       for (int d = 0; d < 3; ++d) {
         const double qd =
             q[d][k] - (hx[k] * L[3 * d][k] + hy[k] * L[3 * d + 1][k] + hz[k] * L[3 * d + 2][k]);
-        double& h = HG[3 * a + d][k];
         double rd;
-        // Booked as the stress is, by the midpoint rule: the forces of t_n and t_{n+1} on the
-        // step's rate (the stiffness form: exactly the change of the stored k HG^2 / 2).
         if constexpr (kStiffness) {
+          // Booked as the stress is, by the midpoint rule: the forces of t_n and t_{n+1} on the
+          // step's rate, exactly the change of the stored k HG^2 / 2.
+          double& h = HG[3 * a + d][k];
           p0 += coeff[k] * h * qd;
           h += qd * dt;
           rd = coeff[k] * h;
         } else {
-          // HG holds the mode's force of the last update: a viscous force is computed from the
-          // step's rate and acts at t_{n+1}; booked on that rate alone, it ran a step ahead of
-          // its forces where the rate jumps (a block's face heated by 200 K at once, 20 %).
-          p0 += h * qd;
+          // The viscous force from the step's rate, booked on that rate (its force of t_n is not
+          // kept: 12 values an element to load and store cost a tenth of the ELFORM 1 kernel's
+          // speed); where the rate jumps its book runs a step ahead of its forces
+          // (docs/energy.md).
           rd = coeff[k] * qd;
-          h = rd;
+          p0 += rd * qd;
         }
         p1 += rd * qd;
         r[d][k] = rd;
@@ -547,20 +547,21 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       hg_start[k] = hg_end[k] = 0.0;
     }
     if (qm > 0.0) {
-      // The stiffness form's hourglass displacements, or the viscous form's last forces.
-      for (std::size_t k = 0; k < kLanes; ++k)
-        for (int j = 0; j < 12; ++j)
-          HG[j][k] = k < n ? st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] : 0.0;
       if (stiffness_hg) {
+        for (std::size_t k = 0; k < kLanes; ++k)
+          for (int j = 0; j < 12; ++j)
+            HG[j][k] = k < n ? st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] : 0.0;
         hourglass_forces<true>(qm * modulus, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq, HG,
                                F, hg_start, hg_end);
       } else {
         hourglass_forces<false>(qm * rho * c_wave, dt, X, Y, Z, VX, VY, VZ, BX, BY, BZ, L, vol, bsq,
                                 HG, F, hg_start, hg_end);
       }
-      for (std::size_t k = 0; k < n; ++k)
-        for (int j = 0; j < 12; ++j)
-          st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] = HG[j][k];
+      if (stiffness_hg) {
+        for (std::size_t k = 0; k < n; ++k)
+          for (int j = 0; j < 12; ++j)
+            st.hourglass[12 * (c0 + k) + static_cast<std::size_t>(j)] = HG[j][k];
+      }
     }
     for (std::size_t k = 0; k < n; ++k) {
       const core::Index* e = conn + 8 * (c0 + k);

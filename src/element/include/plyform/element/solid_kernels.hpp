@@ -45,10 +45,8 @@ struct NodalForces {
 struct SolidBlockState {
   int points = 1;  ///< integration points per element
   std::vector<double> s[6];
-  std::vector<double> eps_p;  ///< effective plastic strain per point (plasticity laws)
-  /// 12 per element: the hourglass modes' displacements (IHQ 4/5) or their last forces
-  /// (viscous, IHQ 1-3: for the midpoint rule of their work).
-  std::vector<double> hourglass;
+  std::vector<double> eps_p;      ///< effective plastic strain per point (plasticity laws)
+  std::vector<double> hourglass;  ///< 12 per element (IHQ 4/5)
   /// The bulk viscosity's pressure of each element's last update (its work is booked by the
   /// midpoint rule, as the stress's).
   std::vector<double> bulk_q;
