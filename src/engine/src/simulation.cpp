@@ -102,6 +102,19 @@ struct ItemResult {
   std::size_t failed_element = 0;
 };
 
+// What a solid or shell kernel call reports, as a work item's result.
+template <class KernelResult>
+ItemResult item_result(const KernelResult& x) {
+  return {x.dt_min,
+          x.dt_element,
+          x.hourglass_energy,
+          x.internal_energy,
+          {x.start_power, x.end_power, x.hourglass_start_power, x.hourglass_end_power},
+          x.failed,
+          x.unsupported_material,
+          x.failed_element};
+}
+
 // A time, temperature or other value to 6 significant digits.
 std::string value_text(double v) {
   std::ostringstream os;
@@ -699,27 +712,13 @@ void Simulation::State::internal(double dt_step) {
           const element::ShellResult x = element::shell_forces(
               blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view,
               spin, dt_step, it.begin, it.end, forces, moments);
-          out = {x.dt_min,
-                 x.dt_element,
-                 x.hourglass_energy,
-                 x.internal_energy,
-                 {x.start_power, x.end_power, x.hourglass_start_power, x.hourglass_end_power},
-                 x.failed,
-                 x.unsupported_material,
-                 x.failed_element};
+          out = item_result(x);
         } else {
           const core::SolidBlock& blk = model.solid_blocks[it.block];
           const element::SolidResult x =
               element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
                                     solids[it.block], view, dt_step, it.begin, it.end, forces);
-          out = {x.dt_min,
-                 x.dt_element,
-                 x.hourglass_energy,
-                 x.internal_energy,
-                 {x.start_power, x.end_power, x.hourglass_start_power, x.hourglass_end_power},
-                 x.failed,
-                 x.unsupported_material,
-                 x.failed_element};
+          out = item_result(x);
         }
         item_seconds[at] += item_clock.lap();
       }
