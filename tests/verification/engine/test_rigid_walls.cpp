@@ -22,12 +22,12 @@ namespace {
 constexpr double kE = 210000.0, kRho = 7.85e-9;  // steel: MPa, t/mm^3 (mm, s, N)
 
 /// A bar of n hexahedra along z, a x a across, from z0 to z0 + length, part 1 (nu = 0: the
-/// 1-D wave speed sqrt(E / rho)). Without bulk viscosity: it smears the impact's front over a
-/// few elements (the bar released early, 1.8 % of the rebound's impulse at 50 elements), which
-/// is its job, not the wall's; and its work, booked on the step's mid-point rate, lags the
-/// first impacts of a moving wall by 5 % (docs/energy.md).
-void bar(DeckWriter& w, double a, double z0, double length, int n) {
-  w.kw("*CONTROL_BULK_VISCOSITY").card(0.0, 0.0);
+/// 1-D wave speed sqrt(E / rho)). Without bulk viscosity unless `bulk`: it smears the impact's
+/// front over a few elements (the bar released early, 1.8 % of the rebound's impulse at 50
+/// elements), which is its job, not the wall's.
+void bar(DeckWriter& w, double a, double z0, double length, int n, bool bulk = false) {
+  if (!bulk)
+    w.kw("*CONTROL_BULK_VISCOSITY").card(0.0, 0.0);
   w.kw("*PART").card("bar").card(1, 1, 1);
   w.kw("*SECTION_SOLID").card(1, 1);
   w.kw("*MAT_ELASTIC").card(1, kRho, kE, 0.0);
@@ -106,7 +106,7 @@ TEST(RigidWalls, AMovingWallExchangesMomentumExactly) {
   w.kw("*DATABASE_GLSTAT").card(t_end / 50);
   w.kw("*DATABASE_RWFORC").card(t_end / 50);
   w.kw("*DATABASE_BINARY_D3PLOT").card(t_end / 50);
-  bar(w, a, gap, length, 40);
+  bar(w, a, gap, length, 40, true);  // LS-DYNA's default bulk viscosity
   w.kw("*NODE").card(9999, 0.0, 0.0, -50.0);
   w.kw("*RIGIDWALL_PLANAR_MOVING_FORCES")
       .card(0)
@@ -138,8 +138,16 @@ TEST(RigidWalls, AMovingWallExchangesMomentumExactly) {
   EXPECT_GT(struck, 0.3 * mass * v_wall);
   // The node that shows the wall moved with it.
   EXPECT_NEAR(shown_z, last.displacement, 1e-9 * length);
+  // The books at every output, through the impact and the bulk viscosity's shortened steps: its
+  // pressure and the stresses booked on dt_avg / 2 each side of their time (docs/energy.md; on
+  // the new pressure alone and the steps' halves, 1.053 over the first cycles). What is left is
+  // the viscous hourglass forces', booked on the step's rate.
+  double worst = 0.0;
   for (const engine::Energies& e : run.sink.energies)
-    EXPECT_NEAR(e.ratio, 1.0, 0.01) << "at t = " << e.time;
+    worst = std::max(worst, std::abs(e.ratio - 1.0));
+  EXPECT_LT(worst, 5e-4);
+  std::printf("moving wall striking a bar, default bulk viscosity: ratio within %.2e of 1\n",
+              worst);
   // The wall's loss of kinetic energy covers what the model gained (the impacts dissipate).
   const engine::Energies& e = run.sink.energies.back();
   const double wall_loss = 0.5 * mass * v_wall * v_wall - last.kinetic;

@@ -6,7 +6,8 @@
 // q booked as its new value alone on the step's rate, the stresses and reactions on the steps'
 // own halves: 1.05 over the first cycles of a wall's impact, 1.07 in a block whose face is heated
 // by 200 K at once. The viscous hourglass forces are still booked on the step's rate alone (their
-// forces of t_n are not kept, for speed): the one-point bar below keeps 1e-4 of it.
+// forces of t_n are not kept, for speed). The wall striking a bar with the default bulk
+// viscosity: test_rigid_walls.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,34 +31,6 @@ double worst_ratio(const DeckRun& r) {
   for (const engine::Energies& e : r.sink.energies)
     worst = std::max(worst, std::abs(e.ratio - 1.0));
   return worst;
-}
-
-TEST(ViscosityBooks, AWallStrikingABarKeepsTheBooksWithTheDefaultBulkViscosity) {
-  // A steel bar of 40 hexahedra (10 x 10 x 100 mm) at rest, struck by a planar wall of the bar's
-  // mass moving at 2 m/s; LS-DYNA's default bulk viscosity (Q1 1.5, Q2 0.06) smears the front.
-  const double a = 10.0, length = 100.0, v_wall = 2000.0, gap = 0.004;
-  const double c = std::sqrt(kE / kRho), t_end = gap / v_wall + 3.0 * length / c;
-  const double mass = kRho * a * a * length;
-  DeckWriter w;
-  w.kw("*CONTROL_TERMINATION").card(t_end);
-  w.kw("*DATABASE_GLSTAT").card(t_end / 200);
-  w.kw("*PART").card("bar").card(1, 1, 1);
-  w.kw("*SECTION_SOLID").card(1, 1);
-  w.kw("*MAT_ELASTIC").card(1, kRho, kE, 0.0);
-  w.block(1, 1, 1, 0.0, a, 0.0, a, gap, gap + length, 1, 1, 40);
-  w.kw("*NODE").card(9999, 0.0, 0.0, -50.0);
-  w.kw("*RIGIDWALL_PLANAR_MOVING_FORCES")
-      .card(0)
-      .card(0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
-      .card(mass, v_wall)
-      .card(0, 0, 9999);
-  DeckRun r;
-  run_deck(w.text(), r);
-  ASSERT_GT(r.sink.energies.size(), 150u);
-  EXPECT_GT(r.sink.energies.back().kinetic, 0.1 * r.sink.energies.back().external_work);
-  const double worst = worst_ratio(r);
-  EXPECT_LT(worst, 5e-4);
-  std::printf("wall striking a bar, default bulk viscosity: ratio within %.2e of 1\n", worst);
 }
 
 // A steel block of 4 x 4 x 8 hexahedra (8 x 8 x 16 mm), its face z = 0 held and heated from 300 K
