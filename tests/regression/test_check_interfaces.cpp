@@ -19,7 +19,7 @@
 #include "temp_dir.hpp"
 
 namespace plyform::app {
-namespace {
+namespace test_check_interfaces {
 
 constexpr double kRho = 7.85e-9, kSteel = 2.1e5, kNu = 0.3, kT = 1.0, kSize = 10.0;
 constexpr double kTssfac = 0.9;
@@ -281,5 +281,5 @@ TEST(CheckInterfaces, AnInterfaceVoteAboveTheElementsStepIsNotWarned) {
   EXPECT_TRUE(warnings(s, kStep).empty());
 }
 
-}  // namespace
+}  // namespace test_check_interfaces
 }  // namespace plyform::app

@@ -11,7 +11,7 @@
 #include "temp_dir.hpp"
 
 namespace plyform::app {
-namespace {
+namespace test_check_step {
 
 // A free 2 x 2 plate of 1 mm shells, 1 mm thick, steel in mm, t, s; plate() fills in the
 // @ fields.
@@ -186,5 +186,5 @@ TEST(CheckParallel, SaysTheThreadsAndThatConsistencyIsMet) {
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace test_check_step
 }  // namespace plyform::app

@@ -13,7 +13,7 @@
 #include "plyform/contact/contact_set.hpp"
 #include "plyform/core/model.hpp"
 
-namespace {
+namespace test_contact_set {
 
 using namespace plyform;
 using V3 = std::array<double, 3>;
@@ -255,8 +255,6 @@ TEST(ContactSet, StickSlipTurnsWithTheSurface) {
   expect_near(s.force(4), f2, 1e-9, "after the turn");
 }
 
-}  // namespace
-
 // An interface past its death time (or before its birth) sets no step: its vote was kept from
 // its last active cycle and went on limiting the run's step.
 TEST(ContactSet, AnInterfaceOutsideItsBirthAndDeathVotesNoStep) {
@@ -274,3 +272,5 @@ TEST(ContactSet, AnInterfaceOutsideItsBirthAndDeathVotesNoStep) {
   EXPECT_TRUE(std::isinf(cs.stable_step())) << cs.stable_step();
   omp_set_num_threads(threads0);
 }
+
+}  // namespace test_contact_set

@@ -13,7 +13,7 @@
 #include "plyform/keyword/read_deck.hpp"
 
 namespace plyform::keyword {
-namespace {
+namespace test_thermal_material_keywords {
 
 using namespace test;  // read_ok, single_error, expect_error, ...
 
@@ -239,5 +239,5 @@ TEST(MatAddThermalExpansion, Rejections) {
                "", "unsupported option");
 }
 
-}  // namespace
+}  // namespace test_thermal_material_keywords
 }  // namespace plyform::keyword

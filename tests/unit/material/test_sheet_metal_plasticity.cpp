@@ -22,7 +22,7 @@
 #include "plyform/material/sheet_metal_plasticity.hpp"
 
 namespace plyform::material {
-namespace {
+namespace test_sheet_metal_plasticity {
 
 constexpr double kE = 2.1e5, kNu = 0.3, kSigy = 200.0;  // MPa
 
@@ -345,5 +345,5 @@ TEST(TransverselyAnisotropicEtan, IsThePlasticModulus) {
   EXPECT_NEAR(p.s[0], kSigy + 1500.0 * p.eps_p, 1e-9 * kSigy);
 }
 
-}  // namespace
+}  // namespace test_sheet_metal_plasticity
 }  // namespace plyform::material

@@ -12,7 +12,7 @@
 #include "tensor_helpers.hpp"
 
 namespace plyform::material::test {
-namespace {
+namespace test_solid_plasticity {
 
 constexpr double kE = 200000.0;
 constexpr double kNu = 0.3;
@@ -135,5 +135,5 @@ TEST(SolidJ2, PlasticStrainNeverDecreasesAndStressStaysOnSurface) {
   random_monotone(power_law());
 }
 
-}  // namespace
+}  // namespace test_solid_plasticity
 }  // namespace plyform::material::test

@@ -11,7 +11,7 @@
 #include "contact_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_cohesive_heat {
 
 // mm, tonne, s, K: steel-like plates (rho 7.85e-9, c 5e8 mm^2/(s^2 K)) conducting well (k 5e3,
 // so each stays uniform); h0 = 1 N/(s mm K) over the slave's 1 mm^2. The slow process runs 1000
@@ -113,5 +113,5 @@ TEST(ContactCohesiveHeat, HeatCrossesATiebreakWhileTiedAndNotOnceItFailed) {
   expect_heat_while_bonded_only(true);
 }
 
-}  // namespace
+}  // namespace test_contact_cohesive_heat
 }  // namespace plyform

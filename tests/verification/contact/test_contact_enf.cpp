@@ -26,7 +26,7 @@
 #include "contact_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_enf {
 
 constexpr double kE = 2.1e5, kRho = 7.85e-9, kHalfSpan = 20.0, kWidth = 1.0, kArm = 1.0;
 constexpr double kCrack = 10.0, kLoad = 1.0;
@@ -139,5 +139,5 @@ TEST(ContactEndNotchedFlexure, ComplianceIsTheModeTwoClosedForm) {
   EXPECT_GE(r.min_contact, -1e-6 * kLoad * expected);
 }
 
-}  // namespace
+}  // namespace test_contact_enf
 }  // namespace plyform

@@ -13,7 +13,7 @@
 #include "contact_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_single_surface {
 
 constexpr double kE = 2.0e5, kNu = 0.3, kRho = 7.85e-9;
 
@@ -270,5 +270,5 @@ TEST(ContactInitialPenetration, CoplanarOverlappingPlatesStayAtRest) {
   }
 }
 
-}  // namespace
+}  // namespace test_contact_single_surface
 }  // namespace plyform

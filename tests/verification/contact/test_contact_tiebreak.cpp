@@ -16,7 +16,7 @@
 #include "contact_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_tiebreak {
 
 constexpr double kE = 2.0e5, kNu = 0.3, kRho = 7.85e-9;
 constexpr double kArea = 9.0;  // the slave plate, 3 x 3 mm
@@ -271,5 +271,5 @@ TEST(ContactTiebreak, CohesiveLawOnATiebreakIsAnErrorAndRepeatedIdsAWarning) {
   EXPECT_TRUE(warned);
 }
 
-}  // namespace
+}  // namespace test_contact_tiebreak
 }  // namespace plyform

@@ -34,7 +34,7 @@
 #include "temp_dir.hpp"
 
 namespace plyform {
-namespace {
+namespace test_deck_dynain_continuation {
 
 constexpr double kHalf = 3.0e-3, kDwell = 0.3e-3;
 constexpr double kLength = 20.0, kWidth = 4.0, kH = 1.0;
@@ -343,5 +343,5 @@ INSTANTIATE_TEST_SUITE_P(ElformNip, DynainContinuation, ::testing::Values(Case{2
                                   std::to_string(param.param.nip);
                          });
 
-}  // namespace
+}  // namespace test_deck_dynain_continuation
 }  // namespace plyform

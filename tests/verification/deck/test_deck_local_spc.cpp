@@ -18,7 +18,7 @@
 #include "recording_sink.hpp"
 
 namespace plyform {
-namespace {
+namespace test_deck_local_spc {
 
 using Vec = std::array<double, 3>;
 
@@ -124,5 +124,5 @@ TEST(DeckLocalSpc, SlidesOnlyAlongTheFreeLocalDirections) {
               plane.largest, plane.worst, plane.gap);
 }
 
-}  // namespace
+}  // namespace test_deck_local_spc
 }  // namespace plyform

@@ -18,7 +18,7 @@
 #include "../contact/contact_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_viscosity_books {
 
 using test::DeckRun;
 using test::DeckWriter;
@@ -81,5 +81,5 @@ TEST(ViscosityBooks, ABlockWhoseFaceIsHeatedAtOnceKeepsTheBooks) {
   }
 }
 
-}  // namespace
+}  // namespace test_viscosity_books
 }  // namespace plyform

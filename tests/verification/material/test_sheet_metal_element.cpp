@@ -29,7 +29,7 @@
 #include "temp_dir.hpp"
 
 namespace plyform {
-namespace {
+namespace test_sheet_metal_element {
 
 constexpr double kE = 2.1e5, kNu = 0.3, kRho = 7.85e-9, kSigy = 200.0;
 constexpr double kSide = 10.0, kThickness = 1.0;
@@ -218,5 +218,5 @@ TEST(Barlat89Element, UniaxialAt0_45_90AndEquibiaxial) {
   expect_equibiaxial(barlat_card(0.0, m, kR00, kR45, kR90), g2 / g1, sb, "barlat_biaxial");
 }
 
-}  // namespace
+}  // namespace test_sheet_metal_element
 }  // namespace plyform

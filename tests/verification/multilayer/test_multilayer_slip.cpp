@@ -45,7 +45,7 @@
 #include "strip_decks.hpp"
 
 namespace plyform::test::multilayer {
-namespace {
+namespace test_multilayer_slip {
 
 constexpr double kLength = 100.0, kRadius = 200.0;
 constexpr double kRamp = 20.0e-3, kEnd = 22.0e-3;
@@ -142,5 +142,5 @@ TEST(MultilayerSlip, SkinsSlideByLengthTimesOffsetOverRadius) {
   expect_books_close(s.books, 0.01);
 }
 
-}  // namespace
+}  // namespace test_multilayer_slip
 }  // namespace plyform::test::multilayer

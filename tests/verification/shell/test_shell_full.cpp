@@ -16,7 +16,7 @@
 #include "solid_models.hpp"
 
 namespace plyform {
-namespace {
+namespace test_shell_full {
 
 constexpr double kE = 210000.0, kNu = 0.3, kRho = 7.85e-9;
 const core::ElasticMaterial kSteel{kRho, kE, kNu};
@@ -437,5 +437,5 @@ TEST(ShellFullPlate, SimplySupportedFirstFrequencyAndEnergy) {
   EXPECT_EQ(sink.energies.back().hourglass, 0.0);
 }
 
-}  // namespace
+}  // namespace test_shell_full
 }  // namespace plyform

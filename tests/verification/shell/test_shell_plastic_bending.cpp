@@ -41,7 +41,7 @@
 #include "solid_models.hpp"
 
 namespace plyform {
-namespace {
+namespace test_shell_plastic_bending {
 
 constexpr double kE = 210000.0, kNu = 0.3, kRho = 7.85e-9, kSigY = 200.0;
 
@@ -216,5 +216,5 @@ INSTANTIATE_TEST_SUITE_P(Nip3And5, ShellPlasticBending, ::testing::Values(3, 5),
                            return "NIP_" + std::to_string(i.param);
                          });
 
-}  // namespace
+}  // namespace test_shell_plastic_bending
 }  // namespace plyform

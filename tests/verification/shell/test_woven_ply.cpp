@@ -15,7 +15,7 @@
 #include "solid_models.hpp"
 
 namespace plyform {
-namespace {
+namespace test_woven_ply {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
@@ -601,5 +601,5 @@ TEST(WovenPly, BiasExtensionWithTheFullyIntegratedShell) {
   EXPECT_GT(fine.slope_shearing, 0.0);
   EXPECT_GT(fine.slope_locked, 10.0 * fine.slope_shearing);
 }
-}  // namespace
+}  // namespace test_woven_ply
 }  // namespace plyform

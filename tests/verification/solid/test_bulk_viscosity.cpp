@@ -14,7 +14,7 @@
 #include "solid_models.hpp"
 
 namespace plyform::engine {
-namespace {
+namespace test_bulk_viscosity {
 
 constexpr double kRho = 1.0e-9, kE = 10.0, kNu = 0.3, kSpeed = 2000.0, kH0 = 2.0;
 
@@ -125,5 +125,5 @@ TEST(BulkViscosity, AFreeBarOfFlatHexahedraStaysStable) {
   }
 }
 
-}  // namespace
+}  // namespace test_bulk_viscosity
 }  // namespace plyform::engine

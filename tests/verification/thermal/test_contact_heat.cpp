@@ -20,7 +20,7 @@
 #include "thermal_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_heat {
 
 core::Model build(const std::string& text) {
   test::TempDir dir;
@@ -203,5 +203,5 @@ TEST(ContactHeat, SteadyConductionThroughTheGapFollowsTheSeriesResistances) {
       lower, upper, face_lower, face_upper, h0 * (lower - upper), q);
 }
 
-}  // namespace
+}  // namespace test_contact_heat
 }  // namespace plyform

@@ -20,7 +20,7 @@
 #include "thermal_decks.hpp"
 
 namespace plyform {
-namespace {
+namespace test_thermomechanics {
 
 constexpr double kYoung = 2.0e11, kPoisson = 0.3;
 constexpr double kSide = 0.01, kShellThickness = 0.001;
@@ -338,5 +338,5 @@ INSTANTIATE_TEST_SUITE_P(Elements, PlasticWorkHeat,
                          ::testing::Values(Body::hex_one_point, Body::hex_selective, Body::shell),
                          [](const auto& p) { return std::string(body_name(p.param)); });
 
-}  // namespace
+}  // namespace test_thermomechanics
 }  // namespace plyform
