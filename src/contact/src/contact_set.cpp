@@ -116,6 +116,11 @@ struct PassRuntime {
   std::vector<double> pressure, tau_x, tau_y, stored;
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
+  // Each node's force power at the end of the last step (-f . du/dt, f of t_n on that step's
+  // rate) and that step's length: measure() books the step change's share of the work with them
+  // (the central differences move the nodes with f of t_n over dt_avg, not the steps' halves).
+  std::vector<double> end_power;
+  double dt_last = 0.0;
   std::vector<double> chunk_sums;  // buffer of chunked_sum
   double work = 0.0;
   std::array<double, 3> resultant{}, master_resultant{};
@@ -284,7 +289,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->side.assign(ns, 0);
       for (auto* v : {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal,
                       &pr->k_tangent, &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y,
-                      &pr->stored, &pr->work_part, &pr->arrival_depth})
+                      &pr->stored, &pr->work_part, &pr->end_power, &pr->arrival_depth})
         v->assign(ns, 0.0);
       pr->force.assign(3 * ns, 0.0);
       pr->prev_force.assign(3 * ns, 0.0);
@@ -1136,14 +1141,19 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     const auto k = static_cast<std::size_t>(lk);
     const core::Index node = cp.slave_nodes[k];
     // First half of the trapezoidal work of the step just taken, with last cycle's force (and
-    // last cycle's frame and surface point, still in the arrays).
+    // last cycle's frame and surface point, still in the arrays). Where the step changed, that
+    // force moved the nodes over dt_avg / 2 on each side of its time: (dt - dt_last) / 4 times
+    // its power on the last step less its power on this one (docs/energy.md).
     double w = 0.0;
     if (pr.prev_seg[k] >= 0) {
       const double* f = &pr.prev_force[3 * k];
       double du[3];
       relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
                         pr.side[k], &pr.frame[9 * k], packed, rot, du);
-      w -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+      const double start_power = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+      w += 0.5 * dt * start_power;
+      if (pr.dt_last > 0.0)
+        w += 0.25 * (dt - pr.dt_last) * (pr.end_power[k] - start_power);
     }
     pr.work_part[k] = w;
     pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
@@ -1423,6 +1433,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       pr.resultant = {0.0, 0.0, 0.0};
       pr.master_resultant = {0.0, 0.0, 0.0};
       std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
+      pr.dt_last = 0.0;
       // An interface that is not there does not set the step; it searches (and votes) anew
       // once it is.
       pr.dt_vote = kInf;
@@ -1515,6 +1526,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       const auto k = static_cast<std::size_t>(lk);
       double* f = &pr.force[3 * k];
       const core::Index s = pr.seg[k];
+      pr.end_power[k] = 0.0;
       if (s < 0) {
         f[0] = f[1] = f[2] = 0.0;
         continue;
@@ -1529,8 +1541,10 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       double du[3];
       relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], pr.side[k], fr, packed, rot_,
                         du);
-      pr.work_part[k] -= 0.5 * dt * (f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+      pr.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+      pr.work_part[k] += 0.5 * dt * pr.end_power[k];
     }
+    pr.dt_last = dt;
     pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
 
     // Scatter in slave order: each node receives its contributions in the same order for any
@@ -1861,6 +1875,7 @@ void ContactSet::visit_state(core::StateArchive& a) {
     a.value("dt_vote", pr.dt_vote);
     a.value("measured", pr.measured);
     a.value("work", pr.work);
+    a.value("dt_last", pr.dt_last);
     a.value("resultant", pr.resultant);
     a.value("master_resultant", pr.master_resultant);
     a.value("seg_normal_current", pr.seg_normal_current);
@@ -1887,6 +1902,7 @@ void ContactSet::visit_state(core::StateArchive& a) {
                            {"force", &pr.force},
                            {"prev_force", &pr.prev_force},
                            {"work_part", &pr.work_part},
+                           {"end_power", &pr.end_power},
                            {"master_normal", &pr.master_normal},
                            {"seg_normal", &pr.seg_normal},
                            {"slave_normal", &pr.slave_normal},

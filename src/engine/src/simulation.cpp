@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <variant>
@@ -350,6 +351,12 @@ struct Simulation::State {
   [[nodiscard]] double stable_step(const InternalResult& x) const {
     return fixed_step ? model.controls.dt_init : tssfac * x.dt_min;
   }
+  /// The largest step the deck allows at time `at` (*CONTROL_TIMESTEP LCTM), or infinity.
+  [[nodiscard]] double step_cap(double at) const {
+    const core::Index c = model.controls.max_step_curve;
+    return c >= 0 ? model.curves[static_cast<std::size_t>(c)](at)
+                  : std::numeric_limits<double>::infinity();
+  }
   [[nodiscard]] double vote(const InternalResult& x) const {
     return contact ? std::min(stable_step(x), contact->stable_step()) : stable_step(x);
   }
@@ -553,6 +560,7 @@ void Simulation::State::set_up_run() {
   }
   if (model.controls.dt_init > 0.0)
     dt = std::min(dt, model.controls.dt_init);
+  dt = std::min(dt, step_cap(0.0));
   if (thermal_only)  // the cycle is the thermal step
     dt = heat->step_length(0.0);
   end_time = options.end_time ? *options.end_time : model.controls.end_time;
@@ -1618,13 +1626,17 @@ bool Simulation::State::step_vote(double& dt_next) {
   // the run in one step and ended there before its books were judged again).
   if (dt > 0.0)
     dt_next = std::min(dt_next, kStepGrowth * dt);
+  const double cap = step_cap(t);
+  const bool by_cap = cap < dt_next;
+  dt_next = std::min(dt_next, cap);
   if (dt_next < dt_floor) {
     sync();
     const bool by_contact = contact && contact->stable_step() < stable_step(ir);
     fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
          " at t = " + time_text(t) + ", set by " +
-         (by_contact ? std::string("the contact stiffness")
-                     : element_name(ir.dt_item, ir.dt_element)));
+         (by_cap       ? std::string("the curve LCTM of *CONTROL_TIMESTEP")
+          : by_contact ? std::string("the contact stiffness")
+                       : element_name(ir.dt_item, ir.dt_element)));
     return false;
   }
   if (end_time > 0.0) {

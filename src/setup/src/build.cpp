@@ -530,6 +530,8 @@ struct Builder {
       m.controls.tssfac = d.timestep->tssfac;
       m.controls.dt2ms = d.timestep->dt2ms;
       m.controls.dt_init = d.timestep->dtinit;
+      if (d.timestep->lctm != 0)
+        m.controls.max_step_curve = curve.at(d.timestep->lctm);
     }
     if (d.d3plot) {
       m.output.d3plot_dt =

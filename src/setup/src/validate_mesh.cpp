@@ -425,6 +425,9 @@ std::vector<Diagnostic> validate_mesh(const model::ModelDesc& model) {
     check_target(m.target, m.target_id, m.where, motion_keyword(m.target));
     check_ref(curves, m.curve_id, m.where, motion_keyword(m.target), "LCID", errors);
   }
+  if (model.timestep && model.timestep->lctm != 0)
+    check_ref(curves, model.timestep->lctm, model.timestep->where, "*CONTROL_TIMESTEP", "LCTM",
+              errors);
   for (const model::LoadNodeDesc& l : model.nodal_loads) {
     check_target(l.target, l.target_id, l.where, load_keyword(l.target));
     check_ref(curves, l.curve_id, l.where, load_keyword(l.target), "LCID", errors);

@@ -87,8 +87,6 @@ TEST(SolverKeywordErrors, NotSupportedYetNamesTheField) {
   EXPECT_EQ(d.field, "LCUR");
   d = single_error("*SET_NODE_LIST\n1,,,,,THERMAL\n1\n");
   EXPECT_EQ(d.field, "SOLVER");
-  d = single_error("*CONTROL_TIMESTEP\n,0.9,,,,3\n");
-  EXPECT_EQ(d.field, "LCTM");
 }
 
 TEST(SolverKeywordErrors, UnsupportedOptionsAndKeywords) {

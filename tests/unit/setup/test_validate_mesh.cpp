@@ -311,6 +311,19 @@ TEST(ValidateMesh, RigidMotionsAndLoadsNeedARigidPart) {
   EXPECT_EQ(errors[5].field, "LCID");
 }
 
+TEST(ValidateMesh, TheStepCurveMustExist) {
+  std::string deck(kSheetDeck);
+  deck +=
+      "*CONTROL_TIMESTEP\n"
+      ",0.9,,,,79\n";  // 2: curve 79
+  const std::vector<Diagnostic> errors = validate_text(deck);
+  ASSERT_EQ(errors.size(), 1u) << all(errors);
+  EXPECT_EQ(errors[0].to_string(),
+            "deck.k:" + std::to_string(after_sheet_deck(2)) +
+                ": *CONTROL_TIMESTEP: field LCTM: curve 79 is not defined (no *DEFINE_CURVE with "
+                "this id)");
+}
+
 // A node shared by two rigid bodies and a rigid part without elements: found with their cards
 // (the engine would stop at the start of the run without either).
 TEST(ValidateMesh, RigidBodiesOwnTheirNodesAndHaveElements) {

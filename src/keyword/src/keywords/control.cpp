@@ -93,7 +93,7 @@ constexpr std::array kTimestepFields{
     FieldSpec{.name = "LCTM",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "curve of the maximum time step: must be 0 (not supported yet)"},
+              .description = "curve of the largest time step against time (0: none)"},
     FieldSpec{.name = "ERODE",
               .type = FieldType::kInteger,
               .unit = "-",
@@ -163,7 +163,6 @@ void read_control_timestep(KeywordInput& in) {
                                .erode = v.integer("ERODE"),
                                .ms1st = v.integer("MS1ST"),
                                .where = in.where(line->line)};
-  require_zero(in, line->line, "LCTM", d.lctm, "a curve of the maximum time step");
   if (const auto card2 = in.next_line())
     (void)in.read(kTimestepCards[1], *card2);
   if (const auto card3 = in.next_nonblank_line()) {
@@ -262,8 +261,9 @@ KeywordSpec control_timestep_keyword() {
           .handler = read_control_timestep,
           .cards = kTimestepCards,
           .summary =
-              "Time step control: TSSFAC and DT2MS (mass scaling) are used; a blank or "
-              "0 TSSFAC is 0.9 as in LS-DYNA. Card 2 is not supported."};
+              "Time step control: TSSFAC, DT2MS (mass scaling), DTINIT and LCTM (a curve "
+              "of the largest step against time) are used; a blank or 0 TSSFAC is 0.9 as "
+              "in LS-DYNA. Card 2 is not supported."};
 }
 
 KeywordSpec control_energy_keyword() {

@@ -182,6 +182,8 @@ struct Controls {
   double tssfac = 0.9;  ///< *CONTROL_TIMESTEP
   double dt2ms = 0.0;   ///< > 0: mass scaling to reach dt = |DT2MS| * TSSFAC
   double dt_init = 0.0;
+  /// LCTM: the curve (index in Model::curves) of the largest step against time; -1: none.
+  Index max_step_curve = -1;
   bool hourglass_energy = true;  ///< *CONTROL_ENERGY HGEN
 };
 

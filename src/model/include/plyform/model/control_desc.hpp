@@ -24,7 +24,7 @@ struct ControlTimestepDesc {
   int isdo = 0;          ///< ISDO: shell characteristic length option, as written
   double tslimt = 0.0;   ///< TSLIMT: shell minimum step, as written
   double dt2ms = 0.0;    ///< DT2MS: mass scaling target step (negative: only added mass)
-  int lctm = 0;          ///< LCTM: curve of the maximum step; must be 0 for now
+  int lctm = 0;          ///< LCTM: curve of the largest step against time (0: none)
   int erode = 0;         ///< ERODE, as written
   int ms1st = 0;         ///< MS1ST, as written
   SourceLocation where;  ///< the card line
