@@ -19,6 +19,7 @@
 #include "deterministic_sum.hpp"
 #include "initial_shell_stress.hpp"
 #include "mass.hpp"
+#include "output_clocks.hpp"
 #include "pass_clock.hpp"
 #include "plyform/core/invariant.hpp"
 #include "plyform/core/stopwatch.hpp"
@@ -274,17 +275,11 @@ struct Simulation::State {
   double ratio_out_since = 0.0;
   long next_books_cycle = 0;
   std::size_t bad_node = 0;  // the first node whose new velocity is not finite
-  // Output clocks.
-  double next_state = 0.0, next_glstat = 0.0, next_nodout = 0.0, next_rcforc = 0.0;
-  double next_bndout = 0.0, next_tprint = 0.0, next_heat = 0.0;
-  double next_spcforc = 0.0, next_sleout = 0.0, next_matsum = 0.0, next_elout = 0.0;
-  double next_rwforc = 0.0;
+  OutputClocks clocks;
   // Each deformable block's share of the nodal masses (*DATABASE_MATSUM only).
   std::vector<BlockMass> solid_mass, shell_mass;
-  bool warned_thermal = false;    // a thermal step's iterations did not converge
-  double heat_written_at = -1.0;  // the time of the last heat.csv row
-  bool state_written = false;
-  double wall_before = 0.0;  // wall seconds of the runs before a restart
+  bool warned_thermal = false;  // a thermal step's iterations did not converge
+  double wall_before = 0.0;     // wall seconds of the runs before a restart
   int reductions_before = 0;
   double reduced_before = 0.0;
   // The checkpoint a run writes at its end: the cycle boundary before the step that lands on
@@ -369,8 +364,6 @@ struct Simulation::State {
   bool books_in_band();
   void distrust(std::string reason, double when);
   void write_outputs(bool last);
-  double written_at = -1.0;  // the time of the outputs `written` lists (bits of write_outputs)
-  unsigned written = 0;
   core::StateArchive::Records checkpoint_records();
   void write_checkpoint();
   void write_checkpoint(const core::StateArchive::Records& records);
@@ -799,7 +792,7 @@ void Simulation::State::fail(const std::string& why) {
   res.error = why;
   // Keep the last state for the diagnosis, unless this cycle's outputs wrote it already (the
   // books' check follows them): a second state at one time would break the series.
-  if (!(state_written && written_at == t))
+  if (!clocks.written_now(Output::state, t))
     sink.state(snapshot());
 }
 
@@ -1342,78 +1335,53 @@ bool Simulation::State::books_in_band() {
 
 void Simulation::State::write_outputs(bool last) {
   const core::OutputRequests& out = model.output;
-  state_written = false;
-  // `last` writes every output once more at the end, except those already written at this
-  // time (the end fell on their interval): no file gets its final row twice.
-  if (t != written_at) {
-    written_at = t;
-    written = 0;
-  }
-  const auto due = [&](double next, unsigned bit) {
-    return t + eps_t >= next || (last && !(written & bit));
+  const auto due = [&](Output o, double interval) {
+    return interval > 0.0 && clocks.due(o, t, eps_t, last);
   };
-  const bool want_state = due(next_state, 1u << 0);
-  const bool want_glstat = out.glstat_dt > 0.0 && due(next_glstat, 1u << 1);
-  const bool want_nodout =
-      out.nodout_dt > 0.0 && !out.history_nodes.empty() && due(next_nodout, 1u << 2);
+  const auto wrote = [&](Output o, double interval) {
+    clocks.wrote(o, t, eps_t, interval, end_time);
+  };
+  // The states: every d3plot interval, else at the start and the end only.
+  const bool want_state = clocks.due(Output::state, t, eps_t, last);
+  const bool want_glstat = due(Output::glstat, out.glstat_dt);
+  const bool want_nodout = !out.history_nodes.empty() && due(Output::nodout, out.nodout_dt);
   // elout.csv turns the shells' stresses to global axes in their current frames.
-  const bool want_elout = out.elout_dt > 0.0 && due(next_elout, 1u << 3);
+  const bool want_elout = due(Output::elout, out.elout_dt);
   if (want_state || want_nodout || want_elout)
     sync();
   if (want_state) {
-    written |= 1u << 0;
     sink.state(snapshot());
-    state_written = true;
-    if (out.d3plot_dt > 0.0) {
-      while (next_state <= t + eps_t)
-        next_state += out.d3plot_dt;
-    } else {
-      next_state = end_time;  // first and last only
-    }
+    wrote(Output::state, out.d3plot_dt);
   }
   if (want_glstat) {
-    written |= 1u << 1;
     sink.glstat(energies());
     check_books(en);
     if (has_rigid)
       sink.rigid_bodies(t, *rigid_bodies);
-    while (next_glstat <= t + eps_t)
-      next_glstat += out.glstat_dt;
+    wrote(Output::glstat, out.glstat_dt);
   }
   if (want_nodout) {
-    written |= 1u << 2;
     sink.nodout(snapshot());
-    while (next_nodout <= t + eps_t)
-      next_nodout += out.nodout_dt;
+    wrote(Output::nodout, out.nodout_dt);
   }
-  if (out.bndout_dt > 0.0 && due(next_bndout, 1u << 4)) {
-    written |= 1u << 4;
+  if (due(Output::bndout, out.bndout_dt)) {
     sink.boundary_forces(snapshot());
-    while (next_bndout <= t + eps_t)
-      next_bndout += out.bndout_dt;
+    wrote(Output::bndout, out.bndout_dt);
   }
   if (heat) {
-    // The heat books on the tprint clock, else on glstat's (and at the end).
+    // The heat books on the tprint clock, else on glstat's (and at the end; with neither, at
+    // the start and the end only).
     const double heat_dt = out.tprint_dt > 0.0 ? out.tprint_dt : out.glstat_dt;
-    if (t + eps_t >= next_heat || (last && heat_written_at != t)) {
+    if (clocks.due(Output::heat, t, eps_t, last)) {
       sink.heat(t, heat->ledger());
-      heat_written_at = t;
-      if (heat_dt > 0.0) {
-        while (next_heat <= t + eps_t)
-          next_heat += heat_dt;
-      } else {
-        next_heat = end_time;
-      }
+      wrote(Output::heat, heat_dt);
     }
-    if (out.tprint_dt > 0.0 && !out.history_nodes.empty() && due(next_tprint, 1u << 5)) {
-      written |= 1u << 5;
+    if (!out.history_nodes.empty() && due(Output::tprint, out.tprint_dt)) {
       sink.temperatures(snapshot());
-      while (next_tprint <= t + eps_t)
-        next_tprint += out.tprint_dt;
+      wrote(Output::tprint, out.tprint_dt);
     }
   }
-  if ((contact || ties) && out.rcforc_dt > 0.0 && due(next_rcforc, 1u << 6)) {
-    written |= 1u << 6;
+  if ((contact || ties) && due(Output::rcforc, out.rcforc_dt)) {
     std::vector<contact::InterfaceReport> reports;
     if (contact)
       reports = contact->report();
@@ -1429,38 +1397,27 @@ void Simulation::State::write_outputs(bool last) {
       }
     }
     sink.contact_forces(t, reports);
-    while (next_rcforc <= t + eps_t)
-      next_rcforc += out.rcforc_dt;
+    wrote(Output::rcforc, out.rcforc_dt);
   }
-  if (out.spcforc_dt > 0.0 && due(next_spcforc, 1u << 7)) {
-    written |= 1u << 7;
+  if (due(Output::spcforc, out.spcforc_dt)) {
     sink.constraint_forces(snapshot());
-    while (next_spcforc <= t + eps_t)
-      next_spcforc += out.spcforc_dt;
+    wrote(Output::spcforc, out.spcforc_dt);
   }
-  if (walls && out.rwforc_dt > 0.0 && due(next_rwforc, 1u << 10)) {
-    written |= 1u << 10;
+  if (walls && due(Output::rwforc, out.rwforc_dt)) {
     sink.rigid_walls(t, *walls);
-    while (next_rwforc <= t + eps_t)
-      next_rwforc += out.rwforc_dt;
+    wrote(Output::rwforc, out.rwforc_dt);
   }
-  if (contact && out.sleout_dt > 0.0 && due(next_sleout, 1u << 8)) {
-    written |= 1u << 8;
+  if (contact && due(Output::sleout, out.sleout_dt)) {
     sink.interface_energies(t, contact->report());
-    while (next_sleout <= t + eps_t)
-      next_sleout += out.sleout_dt;
+    wrote(Output::sleout, out.sleout_dt);
   }
-  if (out.matsum_dt > 0.0 && due(next_matsum, 1u << 9)) {
-    written |= 1u << 9;
+  if (due(Output::matsum, out.matsum_dt)) {
     sink.part_energies(t, part_energies());
-    while (next_matsum <= t + eps_t)
-      next_matsum += out.matsum_dt;
+    wrote(Output::matsum, out.matsum_dt);
   }
   if (want_elout) {
-    written |= 1u << 3;
     sink.element_histories(snapshot());
-    while (next_elout <= t + eps_t)
-      next_elout += out.elout_dt;
+    wrote(Output::elout, out.elout_dt);
   }
 }
 
@@ -1834,19 +1791,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
   }
   {
     const auto scope = a.scope("outputs_due");
-    a.value("state", next_state);
-    a.value("glstat", next_glstat);
-    a.value("nodout", next_nodout);
-    a.value("rcforc", next_rcforc);
-    a.value("bndout", next_bndout);
-    a.value("spcforc", next_spcforc);
-    a.value("sleout", next_sleout);
-    a.value("matsum", next_matsum);
-    a.value("elout", next_elout);
-    a.value("tprint", next_tprint);
-    a.value("heat", next_heat);
-    a.value("heat_written_at", heat_written_at);
-    a.value("state_written", state_written);
+    clocks.visit_state(a);
   }
   {
     const auto scope = a.scope("run");
@@ -1870,7 +1815,6 @@ void Simulation::State::visit_state(core::StateArchive& a) {
   if (walls) {
     const auto scope = a.scope("walls");
     walls->visit_state(a);
-    a.value("rwforc_due", next_rwforc);
   }
   if (contact) {
     const auto scope = a.scope("contact");
@@ -1992,9 +1936,9 @@ RunResult Simulation::run() {
   }
   res.timing = st.timing(loop_clock.lap());
   if (res.ok && !res.stopped) {
-    if (!st.state_written)
+    if (!st.clocks.written_now(Output::state, st.t))
       st.write_outputs(true);
-    if (st.heat && st.heat_written_at != st.t)
+    if (st.heat && !st.clocks.written_now(Output::heat, st.t))
       st.sink.heat(st.t, st.heat->ledger());
     if (st.model.output.glstat_dt > 0.0 && st.en.time != st.t)
       st.sink.glstat(st.energies());
