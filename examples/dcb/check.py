@@ -10,20 +10,17 @@ reference of the peak needs). Prints each check with its figures; exits 1 when o
 Needs numpy and scipy (the beam reference, cohesive_beam.py); the plot needs matplotlib.
 """
 
-import csv
 import json
 import math
 import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import cohesive_beam  # noqa: E402
-
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
+from histories import rows  # noqa: E402
 
 
 def contact_penalty(run):

@@ -27,8 +27,6 @@ measured value; exit 1 when one fails):
   and stretches plastically over the core's inextensible fibres: it slides, README.)
 """
 
-import csv
-import importlib.util
 import json
 import math
 import os
@@ -37,36 +35,13 @@ from collections import defaultdict
 
 import numpy as np
 
-_spec = importlib.util.spec_from_file_location(
-    "square_cup_check", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
-                                     "square_cup", "check.py"))
-cup_check = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(cup_check)
-_spec = importlib.util.spec_from_file_location(
-    "layer_order", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common",
-                                "layer_order.py"))
-layer_order = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(layer_order)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import layer_order  # noqa: E402
+from forming_books import check_books  # noqa: E402
+from histories import rows, states  # noqa: E402
 
 PUNCH_HALF = 35.0
 DIE_EDGE = 37.235 + 8.0  # the die opening's half-width plus its shoulder radius
-
-
-def rows(path):
-    with open(path) as f:
-        return [{k: (float(v) if k != "state" else v) for k, v in r.items()}
-                for r in csv.DictReader(f)]
-
-
-def states(outdir):
-    """(time, file) of every VTU state, from results.pvd."""
-    out = []
-    with open(os.path.join(outdir, "results.pvd")) as f:
-        for line in f:
-            if "<DataSet" in line:
-                t = float(line.split('timestep="')[1].split('"')[0])
-                out.append((t, os.path.join(outdir, line.split('file="')[1].split('"')[0])))
-    return out
 
 
 def read_state(path, cells=False):
@@ -118,7 +93,7 @@ def main(outdir, params_path):
            f"{summary['status']} at t = {summary['final_time']:.6g} s, {summary['cycles']} "
            f"cycles, {summary['wall_seconds']:.0f} s wall on {summary['threads']} thread(s)")
     # The square cup's energy criteria with this example's tolerances (module docstring).
-    _, books = cup_check.check_books(outdir, p["interfaces"], report, balance=0.02,
+    _, books = check_books(outdir, p["interfaces"], report, balance=0.02,
                                      internal_floor=1e-3, books_tol=0.02, damping_tol=None)
     results["interface_books"] = {
         iface: {k: books[iface][-1][k] for k in ("work", "stored", "damage", "viscous",

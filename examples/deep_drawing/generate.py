@@ -46,15 +46,13 @@ t, s, MPa, N, mJ, C.
 """
 
 import argparse
-import importlib.util
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location(
-    "square_cup_generate", os.path.join(HERE, "..", "square_cup", "generate.py"))
-cup = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(cup)
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import square_cup_tools as cup  # noqa: E402  (the square cup's tool set: examples/common)
+
 card, ids, Mesh = cup.card, cup.ids, cup.Mesh
 PLY_FILE = os.path.join(HERE, "..", "materials", "cf_pa6_woven_ply.k")
 PLY_MID = 249

@@ -25,25 +25,14 @@ never negative); the interface's damage energy is omega = sigma_max^2 / C_N time
 lost (5 %). Needs /usr/bin/python3 (numpy, matplotlib, python3-vtk9).
 """
 
-import csv
 import json
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 import numpy as np
 
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-def states(run):
-    """(time, file) of every VTU state listed in results.pvd."""
-    root = ET.parse(os.path.join(run, "results.pvd")).getroot()
-    return [(float(d.get("timestep")), os.path.join(run, d.get("file")))
-            for d in root.iter("DataSet")]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from histories import rows, states  # noqa: E402
 
 
 def read_state(path):

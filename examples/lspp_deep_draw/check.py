@@ -18,19 +18,13 @@ Criteria (each printed with its measured value; exit 1 when one fails):
   sheet (rcforc.csv: contact 1's force on the sheet points down at the end).
 """
 
-import csv
 import json
 import os
 import sys
 from collections import defaultdict
 
-
-def rows(path):
-    with open(path) as f:
-        out = []
-        for r in csv.DictReader(f):
-            out.append({k: (float(v) if k != "type" else v) for k, v in r.items()})
-        return out
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from histories import rows  # noqa: E402
 
 
 def main(argv):

@@ -20,17 +20,14 @@ D3PLOT and EXTENT_BINARY (the last warned about: plyform writes VTU). Units: mm,
 Writes OUTDIR/NAME.k and OUTDIR/NAME.json (the numbers check.py needs).
 """
 
-import importlib.util
 import json
 import math
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-_spec = importlib.util.spec_from_file_location(
-    "square_cup", os.path.join(HERE, "..", "square_cup", "generate.py"))
-cup = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(cup)
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import square_cup_tools as cup  # noqa: E402  (the square cup's tool set: examples/common)
 
 # Deep-drawing steel (DC04-like): Swift hardening sigma_y = K (EPS0 + eps_p)^N, R = 1.8.
 STEEL = {"rho": 7.85e-9, "E": 210000.0, "nu": 0.3, "K": 550.0, "eps0": 0.005, "n": 0.22,

@@ -5,7 +5,6 @@
     /usr/bin/python3 plot.py OUTPNG LABEL=OUTDIR [LABEL=OUTDIR ...]
 """
 
-import csv
 import os
 import sys
 
@@ -14,10 +13,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def rows(path):
-    with open(path) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from histories import rows  # noqa: E402
 
 
 def main(out, runs):
