@@ -20,9 +20,10 @@ struct NodalView {
   const double *x, *y, *z;     ///< current coordinates (t_{n+1})
   const double *x0, *y0, *z0;  ///< reference coordinates
   const double *vx, *vy, *vz;  ///< velocities (t_{n+1/2})
-  /// Optional: x, y, z, vx, vy, vz of each node side by side (6 per node). When given, the
-  /// kernels read the current state from it only (x, y, z, vx, vy, vz above may be stale): an
-  /// element gathers each node from one cache line instead of six.
+  /// x, y, z, vx, vy, vz of each node side by side (6 per node): an element gathers each node
+  /// from one cache line instead of six. The shell kernels read the current state from it only
+  /// and need it; the solid kernels read it when given, else x, y, z, vx, vy, vz above (which
+  /// may be stale when it is given).
   const double* packed = nullptr;
   /// Nodal temperatures at t_n (length node_count): read by the blocks whose state keeps
   /// element temperatures (laws that need them, thermal expansion). May be null otherwise.

@@ -18,7 +18,8 @@
 //   static Moduli moduli(const Parameters&);  small-strain bulk and shear moduli (time step,
 //                                             contact stiffness, hourglass scaling)
 //   static void update_solid(const Parameters&, const SolidPoints&);   when for_solids
-//   static void update_shell(const Parameters&, const ShellPoints&);   when for_shells
+//   static void update_shell(const Parameters&, std::size_t n, const ShellPoints&);
+//                                       when for_shells: the chunk's n points
 //   static MaterialAxes axes(const Parameters&);                        when needs_material_axes
 //   static const auto& cards(const model::ModelDesc&);  the deck's cards of its keyword
 //   static Parameters from_card(const Card&, const DeckCurve&);  their values as parameters
