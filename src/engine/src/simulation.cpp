@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "books_verdict.hpp"
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "initial_shell_stress.hpp"
@@ -128,12 +129,6 @@ std::string time_text(double t) {
   return value_text(t);
 }
 
-// The energy books' bands (docs/energy.md). Beyond distrust_band the run's results are not to
-// be trusted; beyond stop_band (or ENDENG) it stops: no healthy run comes near it (the shipped
-// examples stay within 1 +- 0.01, a velocity jump at t = 0 within 1 +- 0.001 with the
-// conserved kinetic energy), while a run that feeds itself energy passes it within
-// milliseconds of going wrong.
-constexpr double distrust_band = 0.1;
 // The largest rise of the step from one cycle to the next (step_vote).
 constexpr double kStepGrowth = 2.0;
 
@@ -169,6 +164,10 @@ class ThreadCount {
  private:
   int before_ = 1;
 };
+// The energy ratio's stop band (docs/energy.md; ENDENG replaces it): beyond it the run stops.
+// No healthy run comes near it, while a run that feeds itself energy passes it within
+// milliseconds of going wrong. (Beyond BooksVerdict::distrust_band its results are not to be
+// trusted.)
 constexpr double stop_band = 0.5;
 // The books are checked every so many cycles between their outputs, from this cycle on: the
 // first cycles compare energies of round-off size.
@@ -255,26 +254,9 @@ struct Simulation::State {
   std::vector<std::array<double, 4>> shell_power, solid_power;
   std::vector<std::array<double, 2>> shell_end_power, solid_end_power;
   Energies en;
-  bool warned_hourglass = false, warned_contact = false;
-  // The books' judgement (docs/energy.md): the largest energy that entered the model so far
-  // (the ratio's scale), the largest internal energy (the hourglass book's yardstick), whether
-  // the ratio has left 1 +- distrust_band, and the cycle of the next check between outputs.
-  double energy_scale = 0.0;
-  double internal_peak = 0.0;
-  double internal_magnitude = 0.0;  // the largest |internal energy| (thermal runs)
-  double hourglass_peak = 0.0;      // the largest hourglass energy of the run
-  double contact_low = 0.0;         // the most negative energy of any interface at a judgement
-  // A block expands with heat: the expansion's work may drive the internal energy negative, so
-  // the hourglass book is judged against the internal energy's largest magnitude.
-  bool heat_works = false;
-  bool distrusted_ratio = false, distrusted_contact = false;
-  // Consecutive judgements with the ratio outside the distrust band (and the time of the first
-  // of them) and outside the stop band: one alone is a velocity that jumps at that very
-  // instant (a prescribed motion's kink), read between its two half steps.
-  int ratio_out = 0, stop_out = 0;
-  double ratio_out_since = 0.0;
-  long next_books_cycle = 0;
-  std::size_t bad_node = 0;  // the first node whose new velocity is not finite
+  BooksVerdict verdict;       // the books' judgement (docs/energy.md)
+  long next_books_cycle = 0;  // the cycle of the next check between outputs
+  std::size_t bad_node = 0;   // the first node whose new velocity is not finite
   OutputClocks clocks;
   // Each deformable block's share of the nodal masses (*DATABASE_MATSUM only).
   std::vector<BlockMass> solid_mass, shell_mass;
@@ -359,10 +341,8 @@ struct Simulation::State {
   Energies measure_energies();
   /// `last`: the judgement at the end of the run.
   void check_books(const Energies& e, bool last = false);
-  void settle_hourglass_verdict();
-  void settle_contact_verdict();
+  [[nodiscard]] HourglassLeader hourglass_leader() const;
   bool books_in_band();
-  void distrust(std::string reason, double when);
   void write_outputs(bool last);
   core::StateArchive::Records checkpoint_records();
   void write_checkpoint();
@@ -581,11 +561,13 @@ void Simulation::State::set_up_run() {
   advance_velocity(0.0, 0.0, dt, 0.5 * dt);
   fix_rotations();
   kinetic0 = kinetic();
-  energy_scale = std::abs(kinetic0) + stored0;
+  // A block that expands with heat may drive the internal energy negative.
+  bool heat_works = false;
   for (const auto& b : model.solid_blocks)
     heat_works = heat_works || !b.expansion.x.empty();
   for (const auto& b : model.shell_blocks)
     heat_works = heat_works || !b.expansion.x.empty();
+  verdict.start(std::abs(kinetic0) + stored0, heat_works);
   next_books_cycle = books_every;
   eps_t = 1e-9 * std::max(end_time, dt);
   set_up = true;
@@ -1149,147 +1131,34 @@ Energies Simulation::State::measure_energies() {
   e.internal = internal_energy;
   e.external_work = work_external;
   e.total = e.kinetic + e.internal + e.hourglass + e.contact;
-  // LS-DYNA's total / (initial total + external work) reads round-off over round-off once the
-  // work is taken back out (a block compressed and released: the demo read 1.045 with every
-  // book right). The error is measured against the most energy that entered instead, which
-  // is the same ratio while that energy grows (docs/energy.md).
-  const double reference = kinetic0 + stored0 + work_external;
-  energy_scale = std::max(energy_scale, std::abs(reference));
-  e.ratio = energy_scale > 0.0 ? 1.0 + (e.total - reference) / energy_scale : 1.0;
-  internal_peak = std::max(internal_peak, e.internal);
-  internal_magnitude = std::max(internal_magnitude, std::abs(e.internal));
-  hourglass_peak = std::max(hourglass_peak, e.hourglass);
+  verdict.measure(e, kinetic0 + stored0 + work_external);
   return e;
 }
 
-void Simulation::State::distrust(std::string reason, double when) {
-  res.distrust.push_back({std::move(reason), when});
-}
-
-// The books every run is checked against (once each, at the first output where it holds):
-// hourglass energy above 10 % of the internal energy, named by the part with the most; the
-// contact energy of an interface below zero (the contact gave energy to the model) beyond
-// 1e-3 of the energy that entered the model.
-// The hourglass book at the end of a run that completed: judged against the largest internal
-// energy of the whole run, of which the judgements during the run knew only the part so far.
-// Early in a forming run the internal energy is a sliver of what it becomes (a plain
-// three-layer draw: 1.9 mJ of hourglass at the holder's first touch, 24 % of the 8 mJ
-// internal energy then, 0.001 % of the run's 208 J): an early share the run outgrew does not
-// make its results untrustworthy. The warning printed at the time stays in the log.
-void Simulation::State::settle_hourglass_verdict() {
-  const double internal_scale = heat_works ? internal_magnitude : internal_peak;
-  if (!(internal_scale > 0.0) || hourglass_peak > 0.1 * internal_scale)
-    return;
-  const auto is_hourglass = [](const Distrust& d) {
-    return d.reason.rfind("hourglass energy", 0) == 0;
-  };
-  if (std::none_of(res.distrust.begin(), res.distrust.end(), is_hourglass))
-    return;
-  std::erase_if(res.distrust, is_hourglass);
-  res.warnings.push_back(fmt::format(
-      "the hourglass energy warned about above peaked at {:.4g}, {:.4g} % of the run's largest "
-      "internal energy {:.4g}: within 10 %, so it does not count against the results",
-      hourglass_peak, 100.0 * hourglass_peak / internal_scale, internal_scale));
-}
-
-// The contact book at the end of a run that completed, as the hourglass book: judged against
-// the most energy that entered during the whole run. An interface that gave a trace of energy
-// before anything entered (tracked initial penetrations in the first cycles: 0.05 J when the
-// model was at rest) read as "infinitely" broken; 1e-5 of the run's 13.8 kJ is not.
-void Simulation::State::settle_contact_verdict() {
-  if (!(energy_scale > 0.0) || contact_low < -1e-2 * energy_scale)
-    return;
-  const auto is_contact = [](const Distrust& d) { return d.reason.rfind("contact ", 0) == 0; };
-  if (std::none_of(res.distrust.begin(), res.distrust.end(), is_contact))
-    return;
-  std::erase_if(res.distrust, is_contact);
-  res.warnings.push_back(fmt::format(
-      "the negative contact energy warned about above reached {:.4g}, {:.3g} % of the most "
-      "energy that entered the model in the run ({:.4g}): within 1 %, so it does not count "
-      "against the results",
-      contact_low, -100.0 * contact_low / energy_scale, energy_scale));
-}
-
 void Simulation::State::check_books(const Energies& e, bool last) {
-  // Energies at round-off (a model at rest, the first outputs) say nothing: the hourglass
-  // book is judged once it is a millionth of the energy that entered the model.
-  const double entered =
-      std::max(energy_scale, std::abs(kinetic0) + stored0 + std::abs(e.external_work));
-  // Against the largest internal energy of the run: the present one passes through zero when
-  // a released part gives its energy back (the demo's block warned at 11 % of round-off), and
-  // is negative early in a thermal run (thermal contraction's stress work).
-  // With heat at work the internal energy may be negative: its largest magnitude then.
-  const double internal_scale = heat_works ? internal_magnitude : internal_peak;
-  const double yardstick = internal_scale > 0.0 ? internal_scale : entered;
-  if (!warned_hourglass && e.hourglass > 0.1 * yardstick && e.hourglass > 1e-6 * entered) {
-    warned_hourglass = true;
-    std::size_t worst = 0;
-    bool worst_shell = true;
-    double most = -1.0;
-    for (std::size_t b = 0; b < shell_books.size(); ++b)
-      if (shell_books[b][1] > most)
-        most = shell_books[b][1], worst = b, worst_shell = true;
-    for (std::size_t b = 0; b < solid_books.size(); ++b)
-      if (solid_books[b][1] > most)
-        most = solid_books[b][1], worst = b, worst_shell = false;
-    const auto& books = worst_shell ? shell_books[worst] : solid_books[worst];
-    const core::Index part =
-        worst_shell ? model.shell_blocks[worst].part : model.solid_blocks[worst].part;
-    std::ostringstream os;
-    os.precision(4);
-    os << "hourglass energy " << e.hourglass << " is " << 100.0 * e.hourglass / yardstick
-       << " % of the " << (internal_scale > 0.0 ? "largest internal energy " : "energy entered ")
-       << yardstick << " at t = " << e.time << ": most in part "
-       << model.parts[static_cast<std::size_t>(part)].id << " (hourglass " << books[1]
-       << ", internal " << books[0]
-       << "); its results are not to be trusted (a stiffness hourglass control, *HOURGLASS "
-          "IHQ 4 or 5, or a finer mesh)";
-    res.warnings.push_back(os.str());
-    distrust(fmt::format("hourglass energy {:.4g} % of the largest internal energy (above 10 %)",
-                         100.0 * e.hourglass / yardstick),
-             e.time);
-  }
+  std::vector<contact::InterfaceReport> reports;
   if (contact)
-    for (const contact::InterfaceReport& r : contact->report())
-      contact_low = std::min(contact_low, r.work);
-  if (contact && (!warned_contact || !distrusted_contact)) {
-    for (const contact::InterfaceReport& r : contact->report()) {
-      if (!warned_contact && r.work < -1e-3 * entered) {
-        warned_contact = true;
-        std::ostringstream os;
-        os.precision(4);
-        os << "contact " << r.id << " energy " << r.work << " is negative at t = " << e.time
-           << ": the interface gave energy to the model (" << -100.0 * r.work / entered
-           << " % of the energy that entered it)";
-        res.warnings.push_back(os.str());
-      }
-      // Warned from 0.1 % of the energy that entered; the books count as broken from 1 %.
-      if (!distrusted_contact && r.work < -1e-2 * entered) {
-        distrusted_contact = true;
-        distrust(fmt::format("contact {} energy {:.4g} negative ({:.4g} % of the energy that "
-                             "entered the model)",
-                             r.id, r.work, -100.0 * r.work / entered),
-                 e.time);
-      }
-    }
-  }
-  if (std::abs(e.ratio - 1.0) > distrust_band) {
-    if (ratio_out++ == 0)
-      ratio_out_since = e.time;
-  } else {
-    ratio_out = 0;
-  }
-  // Out of the band at two judgements in a row, or at the last one (the end of the run has no
-  // next judgement to confirm it).
-  if (!distrusted_ratio && (ratio_out >= 2 || (last && ratio_out >= 1))) {
-    distrusted_ratio = true;
-    const std::string what = fmt::format(
-        "energy ratio {:.6g}: the books are {:.3g} % of the energy that entered "
-        "out of balance (more than {:.3g} %)",
-        e.ratio, 100.0 * std::abs(e.ratio - 1.0), 100.0 * distrust_band);
-    res.warnings.push_back(what + " from t = " + time_text(ratio_out_since));
-    distrust(what, ratio_out_since);
-  }
+    reports = contact->report();
+  verdict.judge(e, std::abs(kinetic0) + stored0, hourglass_leader(), reports, last, res);
+}
+
+// The block with the most hourglass energy (the first of equals), shells before solids.
+HourglassLeader Simulation::State::hourglass_leader() const {
+  std::size_t worst = 0;
+  bool worst_shell = true;
+  double most = -1.0;
+  for (std::size_t b = 0; b < shell_books.size(); ++b)
+    if (shell_books[b][1] > most)
+      most = shell_books[b][1], worst = b, worst_shell = true;
+  for (std::size_t b = 0; b < solid_books.size(); ++b)
+    if (solid_books[b][1] > most)
+      most = solid_books[b][1], worst = b, worst_shell = false;
+  if (most < 0.0)
+    return {};
+  const auto& books = worst_shell ? shell_books[worst] : solid_books[worst];
+  const core::Index part =
+      worst_shell ? model.shell_blocks[worst].part : model.solid_blocks[worst].part;
+  return {model.parts[static_cast<std::size_t>(part)].id, books[1], books[0]};
 }
 
 // The energy ratio against its stop band (ENDENG, else stop_band), every books_every cycles
@@ -1303,7 +1172,7 @@ bool Simulation::State::books_in_band() {
   check_books(e);
   const double limit = model.controls.energy_change_limit;
   const double band = limit > 0.0 ? limit : stop_band;
-  stop_out = std::abs(e.ratio - 1.0) <= band ? 0 : stop_out + 1;
+  const int stop_out = verdict.stop_check(e.ratio, band);
   if (stop_out < 2) {
     // Out of the band once: look again at the next cycle, not books_every later. A run past its
     // stability limit gains energy by a factor of a few per cycle: the clamped plate at TSSFAC
@@ -1762,18 +1631,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.fixed("solid_books", std::span<std::array<double, 2>>(solid_books));
     a.fixed("shell_end_power", std::span<std::array<double, 2>>(shell_end_power));
     a.fixed("solid_end_power", std::span<std::array<double, 2>>(solid_end_power));
-    a.value("warned_hourglass", warned_hourglass);
-    a.value("warned_contact", warned_contact);
-    a.value("energy_scale", energy_scale);
-    a.value("internal_peak", internal_peak);
-    a.value("internal_magnitude", internal_magnitude);
-    a.value("hourglass_peak", hourglass_peak);
-    a.value("contact_low", contact_low);
-    a.value("distrusted_ratio", distrusted_ratio);
-    a.value("distrusted_contact", distrusted_contact);
-    a.value("ratio_out", ratio_out);
-    a.value("stop_out", stop_out);
-    a.value("ratio_out_since", ratio_out_since);
+    verdict.visit_state(a);
     a.value("next_books_cycle", next_books_cycle);
     std::vector<std::string> reasons;
     std::vector<double> times;
@@ -1967,8 +1825,7 @@ RunResult Simulation::run() {
   res.reduced_thread_seconds = st.reduced_before + st.governor.reduced_seconds();
   res.last = st.energies();
   st.check_books(res.last, true);
-  st.settle_hourglass_verdict();
-  st.settle_contact_verdict();
+  st.verdict.settle(res);
   if (res.wall_seconds > 0.0) {
     res.element_cycles_per_second =
         static_cast<double>(st.element_count) * static_cast<double>(st.cycle) / res.wall_seconds;
