@@ -1,8 +1,9 @@
 // Per-element cost for the decomposition's weights, in units of a Belytschko-Tsay shell with NIP 5
-// and J2 plasticity. The figures are this project's measurements on its 2-core machine (README,
-// Speed; docs/parallel.md): BT NIP 5 J2 about 7.4 M element-cycles/s on one core, ELFORM 16 2.6 to
-// 2.7 times a BT element, hex8 ELFORM 1 about 10 M and ELFORM 2 about 1.5 M (elastic), a contact
-// slave node 1.2 to 1.5 BT elements a pass. A split only needs the ratios to within some 20 %.
+// and J2 plasticity. The figures are this project's measurements on its 2-core machine
+// (docs/speed.md, docs/parallel.md): BT NIP 5 J2 about 7.4 M element-cycles/s on one core,
+// ELFORM 16 2.6 to 2.7 times a BT element, hex8 ELFORM 1 about 10 M and ELFORM 2 about 1.5 M
+// (elastic), a contact slave node 1.2 to 1.5 BT elements a pass. A split only needs the ratios
+// to within some 20 percent.
 
 #include <variant>
 
