@@ -9,32 +9,14 @@ import json
 import math
 import os
 
+from deck_cards import card, ids  # noqa: F401  (the generators take them from here too)
+
 # Tools (mm).
 PUNCH_HALF, PUNCH_CORNER, PUNCH_NOSE = 35.0, 10.0, 8.0
 DIE_HALF, DIE_CORNER, DIE_SHOULDER = 37.235, 12.235, 8.0  # opening 74.47 mm square
 TOOL_EXTENT = 85.0  # die and holder flats reach x, y = 85 mm (the blank's edge is at 75 mm)
 BLANK_HALF = 75.0
 TOOL = {"rho": 7.85e-9, "E": 210000.0, "nu": 0.3}  # the rigid tools' steel (contact stiffness)
-
-
-def card(*fields, width=10):
-    out = []
-    for f in fields:
-        if isinstance(f, float):
-            s = f"{f:.6g}"
-            for digits in (5, 4, 3, 2):
-                if len(s) <= width:
-                    break
-                s = f"{f:.{digits}g}"
-            out.append(s.rjust(width))
-        else:
-            out.append(str(f).rjust(width))
-    return "".join(out) + "\n"
-
-
-def ids(values):
-    values = list(values)
-    return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
 
 
 def contour(half, corner, n):

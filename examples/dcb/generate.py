@@ -30,6 +30,9 @@ import json
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from deck_cards import card, ids  # noqa: E402
+
 LENGTH, WIDTH, THICKNESS, A0 = 100.0, 20.0, 1.5, 30.0
 E, NU, RHO = 135000.0, 0.0, 1.5e-9
 # Interface: G_Ic = omega = sigma_max^2 / C_N = 0.28 N/mm.
@@ -44,26 +47,6 @@ END = 14.0e-3  # [s]
 RAMP = 1.0e-3  # the tip velocity rises smoothly over this time [s]
 HG_QM = 0.1  # stiffness hourglass control (IHQ 4): the arms' zero-energy modes must resist the
 #              interface's nodal forces, which a viscous form (IHQ 1) cannot do at rest
-
-
-def card(*fields, width=10):
-    out = []
-    for f in fields:
-        if isinstance(f, float):
-            s = f"{f:.6g}"
-            for digits in (5, 4, 3, 2):  # fit the field: 1.23457e-05 is 11 characters
-                if len(s) <= width:
-                    break
-                s = f"{f:.{digits}g}"
-            out.append(s.rjust(width))
-        else:
-            out.append(str(f).rjust(width))
-    return "".join(out) + "\n"
-
-
-def ids(values):
-    values = list(values)
-    return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
 
 
 def arm(first_node, first_elem, part, nx, ny, z, width, length):

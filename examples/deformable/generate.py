@@ -29,6 +29,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from deck_cards import card, ids  # noqa: E402
+
 # --- Geometry ----------------------------------------------------------------------------------
 LENGTH, WIDTH, HEIGHT = 48.0, 10.0, 10.0  # block: x in [0, L], y in [0, W], z in [0, H]
 GROWTH = 1.3  # ratio of successive element layers from the bonded face up ...
@@ -72,26 +75,6 @@ HISTORY_DT = 1.0e-4  # glstat, rcforc, matsum interval [s]
 POINT_DT = 1.0e-5  # nodout / cohesive.csv interval of the two points [s]: the tension passes
 #                    through its peak within a few 1e-4 s
 POINT_X = (14.0, 22.0)  # the two interface points of the histories (fig. 10)
-
-
-def card(*fields, width=10):
-    out = []
-    for f in fields:
-        if isinstance(f, float):
-            s = f"{f:.6g}"
-            for digits in (5, 4, 3, 2):  # fit the field: 1.23457e-05 is 11 characters
-                if len(s) <= width:
-                    break
-                s = f"{f:.{digits}g}"
-            out.append(s.rjust(width))
-        else:
-            out.append(str(f).rjust(width))
-    return "".join(out) + "\n"
-
-
-def ids(values):
-    values = list(values)
-    return [card(*values[i:i + 8]) for i in range(0, len(values), 8)]
 
 
 def shear_modulus():
