@@ -227,10 +227,11 @@ struct Simulation::State {
   std::optional<contact::ContactSet> contact;
   std::optional<thermal::HeatSolver> heat;  // temperatures computed (SOLN 1 or 2)
   bool thermal_only = false;                // SOLN 1: no mechanics
-  // Velocities v_{n+1/2} of the last velocity update, and w such that
-  // v_{n+1} = old + (v - old) w (outputs and kinetic energy at t_{n+1}).
-  std::vector<double> old_x, old_y, old_z, old_wx, old_wy, old_wz;
-  double w_full = 0.0;
+  // The velocities and angular velocities before the last velocity update (v_{n+1/2} once the
+  // update at t_{n+1} has made v_{n+3/2}), and the weight w such that the velocity at t_{n+1}
+  // is v_before + (v - v_before) w (the outputs and the kinetic energy at t_{n+1}).
+  std::vector<double> v_before_x, v_before_y, v_before_z, w_before_x, w_before_y, w_before_z;
+  double node_weight = 0.0;
   double t = 0.0;
   long cycle = 0;
   double dt = 0.0;
@@ -253,7 +254,7 @@ struct Simulation::State {
   // the last cycle's step.
   std::vector<std::array<double, 4>> shell_power, solid_power;
   std::vector<std::array<double, 2>> shell_end_power, solid_end_power;
-  Energies en;
+  Energies last_books;
   BooksVerdict verdict;       // the books' judgement (docs/energy.md)
   long next_books_cycle = 0;  // the cycle of the next check between outputs
   std::size_t bad_node = 0;   // the first node whose new velocity is not finite
@@ -275,7 +276,7 @@ struct Simulation::State {
 
   // ---- Scratch of one pass -------------------------------------------------------------------
   std::vector<ItemResult> item_results;
-  InternalResult ir;
+  InternalResult elements_result;
   double bad_velocities = 0.0;
   std::vector<std::array<double, 3>> free_velocity;
   std::vector<double> saved_f;
@@ -517,8 +518,8 @@ void Simulation::State::set_up_run() {
 
   pack();
   internal(0.0);
-  if (ir.failed) {
-    fail(failure_text(ir) + " in the initial mesh");
+  if (elements_result.failed) {
+    fail(failure_text(elements_result) + " in the initial mesh");
     return;
   }
   // The initial stresses' energy, on the areas the first pass found.
@@ -532,7 +533,7 @@ void Simulation::State::set_up_run() {
   }
   tssfac = model.controls.tssfac > 0.0 ? model.controls.tssfac : 0.9;
   // Without deformable elements (rigid bodies only) nothing bounds the step: DTINIT sets it.
-  fixed_step = !(ir.dt_min < 1e300);
+  fixed_step = !(elements_result.dt_min < 1e300);
   if (fixed_step && !(model.controls.dt_init > 0.0)) {
     res.ok = false;
     res.error =
@@ -540,11 +541,12 @@ void Simulation::State::set_up_run() {
         "*CONTROL_TIMESTEP";
     return;
   }
-  dt = stable_step(ir);
+  dt = stable_step(elements_result);
   // Contact interfaces: built once the masses and the elements' first step are known (SOFT = 1
   // stiffness, the contact's step vote).
   if (!model.contacts.empty()) {
-    contact.emplace(model, s.mass, has_rigid ? is_rigid.data() : nullptr, stable_step(ir), tssfac);
+    contact.emplace(model, s.mass, has_rigid ? is_rigid.data() : nullptr,
+                    stable_step(elements_result), tssfac);
     std::vector<const double*> thickness;  // every shell, across the blocks in order
     for (const element::ShellBlockState& b : shells)
       for (const double& v : b.thickness)
@@ -575,14 +577,14 @@ void Simulation::State::set_up_run() {
   dt_floor = floor_ratio * dt;
 
   bc.loads(0.0, s);
-  old_x.assign(n, 0.0);
-  old_y.assign(n, 0.0);
-  old_z.assign(n, 0.0);
+  v_before_x.assign(n, 0.0);
+  v_before_y.assign(n, 0.0);
+  v_before_z.assign(n, 0.0);
   saved_f.assign(3 * bc.constrained_nodes().size(), 0.0);
   rotations = std::any_of(s.inertia.begin(), s.inertia.end(), [](double v) { return v > 0.0; });
-  old_wx.assign(rotations ? n : 0, 0.0);
-  old_wy.assign(rotations ? n : 0, 0.0);
-  old_wz.assign(rotations ? n : 0, 0.0);
+  w_before_x.assign(rotations ? n : 0, 0.0);
+  w_before_y.assign(rotations ? n : 0, 0.0);
+  w_before_z.assign(rotations ? n : 0, 0.0);
   for (const core::FixedDofs& f : model.fixed) {
     if (f.dofs & (core::dof_rx | core::dof_ry | core::dof_rz))
       fixed_rotations.push_back(f);
@@ -698,8 +700,8 @@ void Simulation::State::pack() {
   }
 }
 
-// Element forces at the current positions into `ir`; the nodal force arrays must be zero and
-// the packed copy current (the positions and velocity passes see to both).
+// Element forces at the current positions into `elements_result`; the nodal force arrays must be
+// zero and the packed copy current (the positions and velocity passes see to both).
 void Simulation::State::internal(double dt_step) {
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data(),
                                     plastic_work.empty() ? nullptr : plastic_work.data()};
@@ -767,7 +769,7 @@ void Simulation::State::internal(double dt_step) {
         power[k] += x.power[k];
     }
   }
-  ir = r;
+  elements_result = r;
 }
 
 std::string Simulation::State::element_name(const WorkItem& it, std::size_t e) const {
@@ -818,17 +820,17 @@ void Simulation::State::sync() {
     s.x[i] = model.x0[i] + s.ux[i];
     s.y[i] = model.y0[i] + s.uy[i];
     s.z[i] = model.z0[i] + s.uz[i];
-    s.vnx[i] = old_x[i] + (s.vx[i] - old_x[i]) * w_full;
-    s.vny[i] = old_y[i] + (s.vy[i] - old_y[i]) * w_full;
-    s.vnz[i] = old_z[i] + (s.vz[i] - old_z[i]) * w_full;
+    s.vnx[i] = v_before_x[i] + (s.vx[i] - v_before_x[i]) * node_weight;
+    s.vny[i] = v_before_y[i] + (s.vy[i] - v_before_y[i]) * node_weight;
+    s.vnz[i] = v_before_z[i] + (s.vz[i] - v_before_z[i]) * node_weight;
   }
   if (rotations) {
 #pragma omp parallel for schedule(static) proc_bind(close)
     for (long li = 0; li < static_cast<long>(n); ++li) {
       const auto i = static_cast<std::size_t>(li);
-      s.wnx[i] = old_wx[i] + (s.wx[i] - old_wx[i]) * w_full;
-      s.wny[i] = old_wy[i] + (s.wy[i] - old_wy[i]) * w_full;
-      s.wnz[i] = old_wz[i] + (s.wz[i] - old_wz[i]) * w_full;
+      s.wnx[i] = w_before_x[i] + (s.wx[i] - w_before_x[i]) * node_weight;
+      s.wny[i] = w_before_y[i] + (s.wy[i] - w_before_y[i]) * node_weight;
+      s.wnz[i] = w_before_z[i] + (s.wz[i] - w_before_z[i]) * node_weight;
     }
   }
 }
@@ -847,7 +849,7 @@ void Simulation::State::sync() {
 double Simulation::State::advance_velocity(double t_now, double dt_prev, double dt_next,
                                            double dt_avg) {
   const StepTimes times{t_now, dt_prev, dt_next, dt_avg};
-  w_full = dt_prev / (2.0 * dt_avg);
+  node_weight = dt_prev / (2.0 * dt_avg);
   if (ties)
     ties->gather(s);  // before any node's forces are read
   keep_constrained_forces();
@@ -909,9 +911,9 @@ std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
     acc[1] += nx * ex + ny * ey + nz * ez;
     if (!std::isfinite(nx + ny + nz))
       acc[2] += 1.0;
-    old_x[i] = vx;
-    old_y[i] = vy;
-    old_z[i] = vz;
+    v_before_x[i] = vx;
+    v_before_y[i] = vy;
+    v_before_z[i] = vz;
     s.vx[i] = nx;
     s.vy[i] = ny;
     s.vz[i] = nz;
@@ -923,9 +925,9 @@ std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
       const double mx = s.mx[i], my = s.my[i], mz = s.mz[i];
       const double hr = inv_inertia[i] * dt_avg;
       const double rx = wx - mx * hr, ry = wy - my * hr, rz = wz - mz * hr;
-      old_wx[i] = wx;
-      old_wy[i] = wy;
-      old_wz[i] = wz;
+      w_before_x[i] = wx;
+      w_before_y[i] = wy;
+      w_before_z[i] = wz;
       s.wx[i] = rx;
       s.wy[i] = ry;
       s.wz[i] = rz;
@@ -955,7 +957,7 @@ std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
 void Simulation::State::constrain_nodes(const StepTimes& times, VelocityWork& work) {
   const std::vector<unsigned char>& constrained = bc.constrained();
   const std::vector<core::Index>& constrained_nodes = bc.constrained_nodes();
-  const double* const old[3] = {old_x.data(), old_y.data(), old_z.data()};
+  const double* const v_before[3] = {v_before_x.data(), v_before_y.data(), v_before_z.data()};
   // Free velocities of the constrained nodes, before the constraints overwrite them.
   std::vector<std::array<double, 3>>& free_v = free_velocity;
   for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
@@ -967,13 +969,13 @@ void Simulation::State::constrain_nodes(const StepTimes& times, VelocityWork& wo
                 .dt = times.dt_next,
                 .dt_avg = times.dt_avg,
                 .hold = hold_motions},
-               old, s);
+               v_before, s);
   for (std::size_t k = 0; k < constrained_nodes.size(); ++k) {
     const auto i = static_cast<std::size_t>(constrained_nodes[k]);
     const unsigned char* c = &constrained[3 * i];
     const double* f = &saved_f[3 * k];
     const double e[3] = {s.ex[i], s.ey[i], s.ez[i]};
-    const double vo[3] = {old_x[i], old_y[i], old_z[i]};
+    const double vo[3] = {v_before_x[i], v_before_y[i], v_before_z[i]};
     const double vc[3] = {s.vx[i], s.vy[i], s.vz[i]};
     double r[3];
     for (int d = 0; d < 3; ++d) {
@@ -1072,7 +1074,7 @@ void Simulation::State::stop_at_walls(const StepTimes& times, VelocityWork& work
        walls->apply(times.t, times.dt_next, times.dt_avg, arrays)) {
     const auto i = static_cast<std::size_t>(c.node);
     const double e[3] = {s.ex[i], s.ey[i], s.ez[i]};
-    const double vo[3] = {old_x[i], old_y[i], old_z[i]};
+    const double vo[3] = {v_before_x[i], v_before_y[i], v_before_z[i]};
     const double vc[3] = {s.vx[i], s.vy[i], s.vz[i]};
     for (std::size_t d = 0; d < 3; ++d) {
       const double r = s.mass[i] * (vc[d] - c.free[d]) / times.dt_avg;
@@ -1111,16 +1113,17 @@ void Simulation::State::fix_rotations() {
 // mode by 1/8 m (a dt)^2 (docs/energy.md).
 double Simulation::State::kinetic() {
   sync();
-  return 0.5 * deterministic_sum(
-                   n,
-                   [&](std::size_t i) {
-                     double e = s.mass[i] * twice_kinetic(s.vnx[i], s.vny[i], s.vnz[i], old_x[i],
-                                                          old_y[i], old_z[i]);
-                     if (rotations)
-                       e += s.inertia[i] * twice_kinetic(s.wnx[i], s.wny[i], s.wnz[i], old_wx[i],
-                                                         old_wy[i], old_wz[i]);
-                     return e;
-                   }) +
+  return 0.5 *
+             deterministic_sum(
+                 n,
+                 [&](std::size_t i) {
+                   double e = s.mass[i] * twice_kinetic(s.vnx[i], s.vny[i], s.vnz[i], v_before_x[i],
+                                                        v_before_y[i], v_before_z[i]);
+                   if (rotations)
+                     e += s.inertia[i] * twice_kinetic(s.wnx[i], s.wny[i], s.wnz[i], w_before_x[i],
+                                                       w_before_y[i], w_before_z[i]);
+                   return e;
+                 }) +
          rigid_bodies->kinetic_energy();
 }
 
@@ -1139,11 +1142,13 @@ std::vector<PartEnergies> Simulation::State::part_energies() {
     for (std::size_t k = 0; k < m.nodes.size(); ++k) {
       const auto i = static_cast<std::size_t>(m.nodes[k]);
       // The form of kinetic(), so that the parts sum to glstat's.
-      pe.kinetic += 0.5 * m.mass[k] *
-                    twice_kinetic(s.vnx[i], s.vny[i], s.vnz[i], old_x[i], old_y[i], old_z[i]);
+      pe.kinetic +=
+          0.5 * m.mass[k] *
+          twice_kinetic(s.vnx[i], s.vny[i], s.vnz[i], v_before_x[i], v_before_y[i], v_before_z[i]);
       if (rotations)
         pe.kinetic += 0.5 * m.inertia[k] *
-                      twice_kinetic(s.wnx[i], s.wny[i], s.wnz[i], old_wx[i], old_wy[i], old_wz[i]);
+                      twice_kinetic(s.wnx[i], s.wny[i], s.wnz[i], w_before_x[i], w_before_y[i],
+                                    w_before_z[i]);
       pe.momentum[0] += m.mass[k] * s.vnx[i];
       pe.momentum[1] += m.mass[k] * s.vny[i];
       pe.momentum[2] += m.mass[k] * s.vnz[i];
@@ -1170,8 +1175,8 @@ std::vector<PartEnergies> Simulation::State::part_energies() {
 }
 
 const Energies& Simulation::State::energies() {
-  en = measure_energies();
-  return en;
+  last_books = measure_energies();
+  return last_books;
 }
 
 // The books at t, without making them glstat's row (the checks between outputs use it).
@@ -1281,7 +1286,7 @@ void Simulation::State::write_outputs(bool last) {
   }
   if (want_glstat) {
     sink.glstat(energies());
-    check_books(en);
+    check_books(last_books);
     if (has_rigid)
       sink.rigid_bodies(t, *rigid_bodies);
     wrote(Output::glstat, out.glstat_dt);
@@ -1372,13 +1377,14 @@ void Simulation::State::positions() {
 // Element stresses over the step and their forces at t_{n+1}, and the elements' energy books.
 bool Simulation::State::internal_forces() {
   internal(dt);
-  if (ir.failed) {
+  if (elements_result.failed) {
     sync();
-    fail(failure_text(ir) + " at t = " + time_text(t) + " (cycle " + std::to_string(cycle) + ")");
+    fail(failure_text(elements_result) + " at t = " + time_text(t) + " (cycle " +
+         std::to_string(cycle) + ")");
     return false;
   }
-  hourglass += ir.hourglass;
-  internal_energy += ir.internal;
+  hourglass += elements_result.hourglass;
+  internal_energy += elements_result.internal;
   book_step_change();
   return true;
 }
@@ -1501,7 +1507,7 @@ void Simulation::State::contact_forces() {
 // The next step: the smallest vote of the elements and the contact, cut to land on the end
 // time; false (with the diagnosis) when it falls below the floor.
 bool Simulation::State::step_vote(double& dt_next) {
-  dt_next = vote(ir);
+  dt_next = vote(elements_result);
   // The step rises at most kStepGrowth a cycle. A healthy run's step changes by a few percent
   // a cycle (a released contact spring's vote lets it rise over a few cycles instead of one);
   // an element blowing apart reads a step as large as its nodes have flown (a one-element
@@ -1514,12 +1520,12 @@ bool Simulation::State::step_vote(double& dt_next) {
   dt_next = std::min(dt_next, cap);
   if (dt_next < dt_floor) {
     sync();
-    const bool by_contact = contact && contact->stable_step() < stable_step(ir);
+    const bool by_contact = contact && contact->stable_step() < stable_step(elements_result);
     fail("time step " + time_text(dt_next) + " fell below the floor " + time_text(dt_floor) +
          " at t = " + time_text(t) + ", set by " +
          (by_cap       ? std::string("the curve LCTM of *CONTROL_TIMESTEP")
           : by_contact ? std::string("the contact stiffness")
-                       : element_name(ir.dt_item, ir.dt_element)));
+                       : element_name(elements_result.dt_item, elements_result.dt_element)));
     return false;
   }
   if (end_time > 0.0) {
@@ -1628,12 +1634,12 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     const auto scope = a.scope("nodes");
     s.for_each_state_field(
         [&](const char* name, std::vector<double>& v) { a.fixed(name, std::span<double>(v)); });
-    for (auto [name, v] : {std::pair{"old_x", &old_x},
-                           {"old_y", &old_y},
-                           {"old_z", &old_z},
-                           {"old_wx", &old_wx},
-                           {"old_wy", &old_wy},
-                           {"old_wz", &old_wz},
+    for (auto [name, v] : {std::pair{"v_before_x", &v_before_x},
+                           {"v_before_y", &v_before_y},
+                           {"v_before_z", &v_before_z},
+                           {"w_before_x", &w_before_x},
+                           {"w_before_y", &w_before_y},
+                           {"w_before_z", &w_before_z},
                            {"packed", &packed}}) {
       a.fixed(name, std::span<double>(*v));
     }
@@ -1672,7 +1678,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.value("cycle", cycle);
     a.value("dt", dt);
     a.value("dt_floor", dt_floor);
-    a.value("w_full", w_full);
+    a.value("node_weight", node_weight);
     a.value("dt_first", res.dt_first);
     a.value("dt_last", res.dt_last);
   }
@@ -1683,7 +1689,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
     a.value("hourglass", hourglass);
     a.value("internal", internal_energy);
     a.value("external_work", work_external);
-    a.value("last", en);
+    a.value("last", last_books);
     a.fixed("shell_books", std::span<std::array<double, 2>>(shell_books));
     a.fixed("solid_books", std::span<std::array<double, 2>>(solid_books));
     a.fixed("shell_end_power", std::span<std::array<double, 2>>(shell_end_power));
@@ -1855,7 +1861,7 @@ RunResult Simulation::run() {
       st.write_outputs(true);
     if (st.heat && !st.clocks.written_now(Output::heat, st.t))
       st.sink.heat(st.t, st.heat->ledger());
-    if (st.model.output.glstat_dt > 0.0 && st.en.time != st.t)
+    if (st.model.output.glstat_dt > 0.0 && st.last_books.time != st.t)
       st.sink.glstat(st.energies());
     // The end state for the files written once (dynain), on the end's positions.
     st.sync();
