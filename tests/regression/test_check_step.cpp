@@ -173,6 +173,35 @@ TEST(CheckStep, AnnouncedCyclesAreTheRunsWithMassScaling) {
   EXPECT_NEAR(cycles, announced, 1.0) << json;
 }
 
+// LCTM: a curve that caps the step at a quarter of the stable one for the first half of the
+// run and leaves it free after: check announces 4 x 1/2 + 1/2 = 2.5 times the uncapped cycles,
+// and the run takes them.
+TEST(CheckStep, AStepCurveCapsTheAnnouncedAndTheRunsCycles) {
+  test::TempDir dir;
+  const double c = std::sqrt(kE / (kRho * (1.0 - kNu * kNu)));
+  const double dt = kTssfac * 1.0 / c;
+  std::ostringstream timestep;
+  timestep.precision(17);
+  timestep << "*CONTROL_TIMESTEP\n0.0,0.9,0,0.0,0.0,5\n*DEFINE_CURVE\n5\n0.0," << 0.25 * dt << "\n"
+           << 0.5 * kEndTime << "," << 0.25 * dt << "\n"
+           << 0.5 * kEndTime * (1 + 1e-9) << ",1.0\n1.0,1.0\n";
+  const auto deck = dir.write("capped.k", plate(2, 1, timestep.str()));
+  const CheckRun r = check(deck);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double announced = number_after(r.out, "about ");
+  EXPECT_NEAR(announced, 2.5 * kEndTime / dt, 1e-2 * kEndTime / dt) << r.out;
+  EXPECT_NE(r.out.find("with the largest step of the curve LCTM"), std::string::npos) << r.out;
+  RunOptions o;
+  o.deck = deck;
+  o.output = dir.path() / "out";
+  o.progress = false;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
+  std::ifstream in(*o.output / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NEAR(number_after(json, "\"cycles\":"), announced, 0.01 * announced) << json;
+}
+
 // *CONTROL_PARALLEL: check says how many threads a run takes without --threads, and that the
 // consistency a negative NCPU asks LS-DYNA for is always there (no warning).
 TEST(CheckParallel, SaysTheThreadsAndThatConsistencyIsMet) {

@@ -210,11 +210,23 @@ void print_stable_step(const core::Model& m, std::ostream& out) {
     return;
   const double tssfac = m.controls.tssfac;
   const double dt = tssfac * step.dt;
+  // *CONTROL_TIMESTEP LCTM caps the step by a curve of time: the cycles are the integral of
+  // 1 / min(dt, cap(t)) over the run (sampled; the run steps from one cap to the next).
+  const core::Index cap_curve = m.controls.max_step_curve;
+  double cycles = m.controls.end_time / dt;
+  if (cap_curve >= 0) {
+    const core::LoadCurve& cap = m.curves[static_cast<std::size_t>(cap_curve)];
+    constexpr int kSamples = 10000;
+    const double h = m.controls.end_time / kSamples;
+    cycles = 0.0;
+    for (int k = 0; k < kSamples; ++k)
+      cycles += h / std::max(std::min(dt, cap((k + 0.5) * h)), 1e-300);
+  }
   fmt::print(out,
              "stable time step estimate: {:.6g} (TSSFAC {:g}, set by element {}{}), about {:.6g} "
-             "cycles\n",
-             dt, tssfac, step.element, step.scaled_elements > 0 ? ", mass scaled" : "",
-             m.controls.end_time / dt);
+             "cycles{}\n",
+             dt, tssfac, step.element, step.scaled_elements > 0 ? ", mass scaled" : "", cycles,
+             cap_curve >= 0 ? " with the largest step of the curve LCTM" : "");
   if (m.controls.dt2ms != 0.0) {
     const double share = step.physical_mass > 0.0 ? step.added_mass / step.physical_mass : 0.0;
     fmt::print(out,

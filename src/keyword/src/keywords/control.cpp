@@ -263,7 +263,7 @@ KeywordSpec control_timestep_keyword() {
           .summary =
               "Time step control: TSSFAC, DT2MS (mass scaling), DTINIT and LCTM (a curve "
               "of the largest step against time) are used; a blank or 0 TSSFAC is 0.9 as "
-              "in LS-DYNA. Card 2 is not supported."};
+              "in LS-DYNA. Card 2 is read at its defaults only."};
 }
 
 KeywordSpec control_energy_keyword() {
