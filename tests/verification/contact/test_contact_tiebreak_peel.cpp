@@ -25,7 +25,7 @@
 #include "plyform/setup/contact_penalty.hpp"
 
 namespace plyform {
-namespace {
+namespace test_contact_tiebreak_peel {
 
 constexpr double kE = 2.0e5, kRho = 7.85e-9, kH = 1.0, kB = 2.0;
 constexpr double kLength = 30.0, kA0 = 5.0, kDx = 0.5;  // 5.4 / lambda beyond the last front
@@ -281,5 +281,5 @@ TEST(ContactTiebreakPeel, Option2FrontFailsOnTheClosedFormWithTheTangentialSprin
   expect_peel_on_the_closed_form("2," + std::to_string(kNfls) + ",1e6", 1.0);
 }
 
-}  // namespace
+}  // namespace test_contact_tiebreak_peel
 }  // namespace plyform

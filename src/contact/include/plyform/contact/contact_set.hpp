@@ -165,6 +165,10 @@ class ContactSet {
   const unsigned char* rigid_;
   void follow_thickness(PassRuntime& pr) const;
   std::vector<std::unique_ptr<PassRuntime>> passes_;
+  // Per model node: how many tiebreak passes hold it (empty without one). Their springs share
+  // one spring's stability budget at the node (contact_set.cpp, tie_share).
+  std::vector<std::uint8_t> tie_passes_at_;
+  void count_tie_passes();
   std::vector<const double*> shell_thickness_;
   Rotations rot_;
   std::vector<std::string> warnings_;
