@@ -157,10 +157,11 @@ struct PassRuntime {
   // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
   std::vector<std::int8_t> tie_state;
   std::vector<double> tie_gap0;
+  std::vector<double> tie_damping;
   // Per model node: how many tiebreak passes hold it (ContactSet::tie_passes_at_), or null
   // when this pass does not tie.
   const std::uint8_t* ties_at = nullptr;
-  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data()}; }
+  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data(), tie_damping.data()}; }
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -286,6 +287,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       if (ci.tiebreak.enabled()) {
         pr->tie_state.assign(ns, static_cast<std::int8_t>(TieState::free));
         pr->tie_gap0.assign(ns, 0.0);
+        pr->tie_damping.assign(ns, 0.0);
       }
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
@@ -1517,6 +1519,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         if (pr.seg[k] >= 0 || static_cast<TieState>(pr.tie_state[k]) != TieState::tied)
           continue;
         pr.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
+        pr.tie_damping[k] = 0.0;
         pr.hist.e_damage[k] += pr.stored[k];
         pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
         pr.hist.beta[k] = 0.0;
@@ -1559,7 +1562,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         pr.law.update_batch(ci, ch, co);
       } else {
         const TieArrays tie = pr.ties();
-        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
+        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch,
+                        {tie.state + b, tie.gap0 + b, tie.damping + b}, co);
       }
     }
 
@@ -1910,6 +1914,7 @@ void ContactSet::visit_state(core::StateArchive& a) {
     a.fixed("friction_heated", std::span<double>(pr.friction_heated));
     a.fixed("tie_state", std::span<std::int8_t>(pr.tie_state));
     a.fixed("tie_gap0", std::span<double>(pr.tie_gap0));
+    a.fixed("tie_damping", std::span<double>(pr.tie_damping));
     a.array("cand_start", pr.cand_start);
     a.array("cand", pr.cand);
     a.array("seg_radius", pr.seg_radius);

@@ -240,6 +240,61 @@ TEST(ContactTiebreak, Option1TiesOnContactAndHoldsInTension) {
   }
 }
 
+// The contact's normal damping (VDC, percent of critical) acts on a tied node as on any contact
+// spring. A one-element plate tied to a fixed rigid plate and let go at 10 mm/s normal to it
+// rings on its tie springs alone (its four nodes alike, x, y and the rotations held): a damped
+// oscillator, whose amplitude falls by exp(2 pi zeta / sqrt(1 - zeta^2)) per period with zeta =
+// VDC / 100, the master being rigid (m* = the slave's mass). The SFS puts the springs well
+// below the step's limit (sqrt(k / m) dt about 0.1), where the central differences keep that
+// decrement. The damper's work is booked as the contact's work is (work = stored + damping
+// within 1e-3; booked as c (dg/dt)^2 dt it was 1.5 % above).
+TEST(ContactTiebreak, ContactDampingDecaysATiedNodesVibrationAtItsFractionOfCritical) {
+  for (const double vdc : {0.0, 10.0}) {
+    test::DeckWriter d;
+    const double end = 2e-4;
+    d.kw("*CONTROL_TERMINATION").card(end);
+    d.kw("*DATABASE_GLSTAT").card(end / 200);
+    d.kw("*DATABASE_RCFORC").card(end / 200);
+    d.kw("*DATABASE_NODOUT").card(end / 4000);
+    d.kw("*PART").kw("fixed rigid plate").card(1, 1, 2);
+    d.kw("*PART").kw("tied plate").card(2, 1, 1);
+    d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
+    d.kw("*MAT_ELASTIC").card(1, kRho, kE, kNu);
+    d.kw("*MAT_RIGID").card(2, kRho, kE, kNu).card(1, 7, 7);
+    d.plate(1, 1, 1, 0, 8, 0, 8, 4, 4, 0.0);
+    const auto slave = d.plate(2, 1001, 1001, 2.5, 5.5, 2.5, 5.5, 1, 1, 1.0);
+    d.kw("*SET_NODE_LIST").card(2).ids(slave);
+    d.kw("*DATABASE_HISTORY_NODE").ids(slave);
+    d.kw("*BOUNDARY_SPC_SET").card(2, 0, 1, 1, 0, 1, 1, 1);
+    d.kw("*INITIAL_VELOCITY_NODE");
+    for (int n : slave)
+      d.card(n, 0.0, 0.0, 10.0);
+    d.kw("*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK_ID").card(7, "tie");
+    d.card(2, 1, 3, 3).card(0, 0, 0, 0, vdc).card(0.1, 1).card(2, 1e3, 1e3);
+    test::DeckRun r;
+    test::run_deck(d.text(), r);
+    // The peaks of the slave's uz (one node: all four move alike).
+    std::vector<std::pair<double, double>> peaks;
+    for (std::size_t i = 1; i + 1 < r.uz.size(); ++i) {
+      const double a = r.uz[i - 1].second[0], b = r.uz[i].second[0], c = r.uz[i + 1].second[0];
+      if (b > a && b >= c)
+        peaks.emplace_back(r.uz[i].first, b);
+    }
+    ASSERT_GE(peaks.size(), 4u) << "VDC " << vdc;
+    const double zeta = vdc / 100.0;
+    const double per_period = std::exp(-2.0 * M_PI * zeta / std::sqrt(1.0 - zeta * zeta));
+    for (std::size_t i = 1; i < 4; ++i)
+      EXPECT_NEAR(peaks[i].second / peaks[i - 1].second, per_period, 0.01)
+          << "VDC " << vdc << ", peak " << i << " at t = " << peaks[i].first;
+    const auto& last = r.sink.contact.back().second.at(0);
+    EXPECT_EQ(last.bonded + last.in_contact, 4u) << "VDC " << vdc;  // still tied
+    EXPECT_NEAR(last.stored + last.damping, last.work, 1e-3 * last.work) << "VDC " << vdc;
+    if (vdc == 0.0) {
+      EXPECT_EQ(last.damping, 0.0);
+    }
+  }
+}
+
 // Build: the cohesive law cannot be put on a tiebreak contact (the tie is that interface's law);
 // a repeated contact id is a warning naming both contacts.
 TEST(ContactTiebreak, CohesiveLawOnATiebreakIsAnErrorAndRepeatedIdsAWarning) {

@@ -18,7 +18,7 @@
 
 namespace plyform::engine {
 
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 inline constexpr std::string_view checkpoint_file_name = "d3dump";
 
 /// A checkpoint that cannot be used: the message says why (missing, not a checkpoint, another
