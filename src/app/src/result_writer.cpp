@@ -137,7 +137,8 @@ ResultWriter::ResultWriter(const core::Model& model, const std::filesystem::path
     interface_energy_.emplace(
         outdir / kInterfaceEnergy,
         std::vector<std::string>{"time", "interface", "work", "stored", "damage", "viscous",
-                                 "friction", "damping", "healing", "in_contact", "bonded"},
+                                 "friction", "damping", "healing", "in_contact", "bonded",
+                                 "surface"},
         at(kInterfaceEnergy));
   }
   for (const core::ContactInterface& c : model.contacts)
@@ -526,7 +527,7 @@ void ResultWriter::contact_forces(double time,
     interface_energy_->row_mixed({time, static_cast<std::int64_t>(r.id), r.work, r.stored, r.damage,
                                   r.viscous, r.friction, r.damping, r.healing,
                                   static_cast<std::int64_t>(r.in_contact),
-                                  static_cast<std::int64_t>(r.bonded)});
+                                  static_cast<std::int64_t>(r.bonded), r.surface});
   }
   rcforc_->write(rcforc_rows_);
 }

@@ -116,6 +116,12 @@ struct PassRuntime {
   std::vector<double> pressure, tau_x, tau_y, stored;
   std::vector<double> force, prev_force;  // 3 each
   std::vector<double> work_part;
+  // The normal gap change of the step that no motion of the nodes made (the layers' thickness
+  // followed by the offsets, a node passing to a segment of another offset or height, an
+  // arrival depth let go, the surface's curvature), per slave node, and the tractions' work on
+  // it: the interface's `surface` book (measure() and the force loop, as work_part).
+  std::vector<double> gap_jump, surface_part;
+  double surface = 0.0;
   // Each node's force power at the end of the last step (-f . du/dt, f of t_n on that step's
   // rate) and that step's length: measure() books the step change's share of the work with them
   // (the central differences move the nodes with f of t_n over dt_avg, not the steps' halves).
@@ -292,9 +298,10 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
       pr->side.assign(ns, 0);
-      for (auto* v : {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal,
-                      &pr->k_tangent, &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y,
-                      &pr->stored, &pr->work_part, &pr->end_power, &pr->arrival_depth})
+      for (auto* v :
+           {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal, &pr->k_tangent,
+            &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y, &pr->stored, &pr->work_part,
+            &pr->end_power, &pr->arrival_depth, &pr->gap_jump, &pr->surface_part})
         v->assign(ns, 0.0);
       pr->force.assign(3 * ns, 0.0);
       pr->prev_force.assign(3 * ns, 0.0);
@@ -1191,17 +1198,21 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // force moved the nodes over dt_avg / 2 on each side of its time: (dt - dt_last) / 4 times
     // its power on the last step less its power on this one (docs/energy.md).
     double w = 0.0;
+    double moved_before = 0.0;  // the step's normal motion at last cycle's point and normal
     if (pr.prev_seg[k] >= 0) {
       const double* f = &pr.prev_force[3 * k];
       double du[3];
       relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
                         pr.side[k], &pr.frame[9 * k], packed, rot, du);
+      const double* n_before = &pr.frame[9 * k];
+      moved_before = dt * (du[0] * n_before[0] + du[1] * n_before[1] + du[2] * n_before[2]);
       const double start_power = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
       w += 0.5 * dt * start_power;
       if (pr.dt_last > 0.0)
         w += 0.25 * (dt - pr.dt_last) * (pr.end_power[k] - start_power);
     }
     pr.work_part[k] = w;
+    pr.gap_jump[k] = 0.0;
     pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
     const auto state = static_cast<law::NodeState>(h.state[k]);
     const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
@@ -1211,6 +1222,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     pr.seg[k] = s;
     double* rs = &pr.rs[3 * k];
     if (s < 0) {
+      pr.surface_part[k] = 0.0;
       pr.gap[k] = pr.far_gap;
       pr.arrival_depth[k] = 0.0;
       pr.slip_x[k] = pr.slip_y[k] = 0.0;
@@ -1292,6 +1304,17 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     }
     pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
     pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
+    // The surface book: the law's gap changed by pr.gap - h.gap over the step, the nodes'
+    // motion moved it by dt du . n; the rest no work of the nodes paid for. Each half of the
+    // step's work is measured as the work is: last cycle's pressure with last cycle's point and
+    // normal (the pressure still last cycle's here), this cycle's with this cycle's (the force
+    // loop). A node found again starts afresh.
+    pr.surface_part[k] = 0.0;
+    if (was_located) {
+      const double changed = pr.gap[k] - h.gap[k];
+      pr.gap_jump[k] = changed - dt * (du[0] * n[0] + du[1] * n[1] + du[2] * n[2]);
+      pr.surface_part[k] = -0.5 * pr.pressure[k] * cp.slave_area[k] * (changed - moved_before);
+    }
     const double me = effective_mass(node_mass(mass, rigid, node), mm);
     pr.m_eff[k] = me;
     const double kk = penalty(pr, k, s, me);
@@ -1575,6 +1598,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       double* f = &pr.force[3 * k];
       const core::Index s = pr.seg[k];
       pr.end_power[k] = 0.0;
+      pr.surface_part[k] -= 0.5 * pr.pressure[k] * cp.slave_area[k] * pr.gap_jump[k];
       if (s < 0) {
         f[0] = f[1] = f[2] = 0.0;
         continue;
@@ -1594,6 +1618,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
     pr.dt_last = dt;
     pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
+    pr.surface += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.surface_part[k]; });
 
     // Scatter in slave order: each node receives its contributions in the same order for any
     // number of threads.
@@ -1699,6 +1724,7 @@ std::vector<InterfaceReport> ContactSet::report() const {
       r.master_force[c] += pr.master_resultant[c];
     }
     r.work += pr.work;
+    r.surface += pr.surface;
     const law::BatchHistory& h = pr.hist;
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
@@ -1924,6 +1950,7 @@ void ContactSet::visit_state(core::StateArchive& a) {
     a.value("dt_vote", pr.dt_vote);
     a.value("measured", pr.measured);
     a.value("work", pr.work);
+    a.value("surface", pr.surface);
     a.value("dt_last", pr.dt_last);
     a.value("resultant", pr.resultant);
     a.value("master_resultant", pr.master_resultant);
@@ -1951,6 +1978,8 @@ void ContactSet::visit_state(core::StateArchive& a) {
                            {"force", &pr.force},
                            {"prev_force", &pr.prev_force},
                            {"work_part", &pr.work_part},
+                           {"gap_jump", &pr.gap_jump},
+                           {"surface_part", &pr.surface_part},
                            {"end_power", &pr.end_power},
                            {"master_normal", &pr.master_normal},
                            {"seg_normal", &pr.seg_normal},

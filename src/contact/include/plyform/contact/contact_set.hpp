@@ -26,6 +26,11 @@ struct InterfaceReport {
   /// segment sum to one), kept as a check of the force distribution.
   std::array<double, 3> master_force{};
   double work = 0.0;  ///< contact energy: work the contact forces took from the nodes
+  /// Energy the normal tractions took from gap changes that no motion of the nodes made: the
+  /// layers' thickness followed by the offsets, a node passing to a segment of another offset
+  /// or height, an arrival depth let go, the surface's curvature. work + surface = what the
+  /// law booked (stored + damage + viscous + friction + damping).
+  double surface = 0.0;
   // The law's books, summed over the slave nodes (energy units).
   double stored = 0.0;         ///< held now: penalty and cohesive springs, stick springs
   double damage = 0.0;         ///< adhesion energy released by damage

@@ -1,0 +1,100 @@
+// The interface's `surface` book: the energy its tractions exchange with gap changes that no
+// motion of the nodes made.
+//
+// A steel plate (8 x 8 x 1 mm, 4 x 4 shells) lies on a fixed one under a uniform pressure p of
+// 1 MPa, through a frictionless one-way contact whose offsets follow the shells' thickness
+// (*CONTROL_CONTACT THKCHG 1). Held, it is then stretched along x by 2 % (its left edge held in
+// x, its right edge pulled, y free: uniaxial stress), so it thins by nu eps_x t0 = 6 microns.
+// Its lower surface rises by half of that relative to its mid-surface: the gap opens without any
+// node moving, and the pressure pushes the plate down after it, doing work on the nodes that the
+// interface's spring never held.
+// References:
+// - the surface book is -p A nu eps_x t0 / 2 (the pressure's work on the offset's motion;
+//   plane stress, small strain);
+// - the interface's books close: work + surface = stored (frictionless, undamped);
+// - with THKCHG 0 the offsets stay and the surface book stays at zero.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact_decks.hpp"
+
+namespace plyform {
+namespace test_contact_surface_book {
+
+constexpr double kSide = 8.0, kThickness = 1.0, kNu = 0.3, kPressure = 1.0, kStretch = 0.02;
+constexpr double kEnd = 4e-4;
+
+std::string deck(bool follow_thickness) {
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(kEnd);
+  d.kw("*CONTROL_CONTACT").card(0.1, 0, 0, 0, 0, follow_thickness ? 1 : 0);
+  d.kw("*DATABASE_GLSTAT").card(kEnd / 100);
+  d.kw("*DATABASE_RCFORC").card(kEnd / 100);
+  for (int p : {1, 2}) {
+    d.kw("*PART").kw("plate").card(p, 1, 1);
+  }
+  d.kw("*SECTION_SHELL")
+      .card(1, 16, 0.8333, 2)
+      .card(kThickness, kThickness, kThickness, kThickness);
+  d.kw("*MAT_ELASTIC").card(1, 7.85e-9, 2.0e5, kNu);
+  const auto below = d.plate(1, 1, 1, -1.0, kSide + 1.0, -1.0, kSide + 1.0, 5, 5, 0.0);
+  const auto plate = d.plate(2, 1001, 1001, 0.0, kSide, 0.0, kSide, 4, 4, kThickness);
+  std::vector<int> left, right;
+  for (int j = 0; j <= 4; ++j) {
+    left.push_back(plate[static_cast<std::size_t>(5 * j)]);
+    right.push_back(plate[static_cast<std::size_t>(5 * j + 4)]);
+  }
+  d.kw("*SET_NODE_LIST").card(1).ids(below);
+  d.kw("*SET_NODE_LIST").card(2).ids(plate);
+  d.kw("*SET_NODE_LIST").card(3).ids(left);
+  d.kw("*SET_NODE_LIST").card(4).ids(right);
+  d.kw("*SET_NODE_LIST").card(5).ids({left[0]});
+  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 1, 1, 1, 1, 1, 1);
+  d.kw("*BOUNDARY_SPC_SET").card(3, 0, 1, 0, 0, 0, 0, 0);
+  d.kw("*BOUNDARY_SPC_SET").card(5, 0, 0, 1, 0, 0, 0, 0);
+  // The pressure comes on over the first quarter and holds; the stretch follows over the
+  // second and third (a smooth displacement, zero velocity at both ends).
+  d.kw("*DEFINE_CURVE").card(1).card(0.0, 0.0).card(kEnd / 4, 1.0).card(kEnd, 1.0);
+  d.kw("*SET_SHELL_LIST")
+      .card(1)
+      .ids({1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008, 1009, 1010, 1011, 1012, 1013, 1014,
+            1015, 1016});
+  d.kw("*LOAD_SHELL_SET").card(1, 1, kPressure);
+  d.kw("*DEFINE_CURVE").card(2);
+  const double t0 = kEnd / 4, t1 = 3 * kEnd / 4;
+  for (int i = 0; i <= 40; ++i) {
+    const double s = i / 40.0;
+    d.card(t0 + s * (t1 - t0), kStretch * kSide * s * s * (3.0 - 2.0 * s));
+  }
+  d.card(kEnd, kStretch * kSide);
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(4, 1, 2, 2, 1.0);
+  d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(1, "plate on the fixed plate");
+  d.card(2, 1, 3, 3).card(0, 0).card(1, 1);
+  return d.text();
+}
+
+TEST(ContactSurfaceBook, AThinningPlateUnderPressureBooksThePressuresWorkOnItsOffset) {
+  test::DeckRun thin;
+  test::run_deck(deck(true), thin);
+  ASSERT_FALSE(thin.sink.contact.empty());
+  const auto& last = thin.sink.contact.back().second.at(0);
+  const double area = kSide * kSide;
+  const double expected = -kPressure * area * kNu * kStretch * kThickness / 2.0;
+  EXPECT_NEAR(last.surface, expected, 0.02 * std::abs(expected));
+  // The books, at every output once the pressure is on.
+  for (const auto& [t, reports] : thin.sink.contact) {
+    const auto& r = reports.at(0);
+    EXPECT_NEAR(r.work + r.surface, r.stored, 1e-3 * std::abs(expected)) << "t = " << t;
+  }
+  EXPECT_TRUE(thin.result.distrust.empty());
+
+  test::DeckRun fixed;
+  test::run_deck(deck(false), fixed);
+  const auto& held = fixed.sink.contact.back().second.at(0);
+  EXPECT_NEAR(held.surface, 0.0, 1e-3 * std::abs(expected));
+  EXPECT_NEAR(held.work, held.stored, 1e-3 * std::abs(expected));
+}
+
+}  // namespace test_contact_surface_book
+}  // namespace plyform
