@@ -163,11 +163,10 @@ struct PassRuntime {
   // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
   std::vector<std::int8_t> tie_state;
   std::vector<double> tie_gap0;
-  std::vector<double> tie_damping;
   // Per model node: how many tiebreak passes hold it (ContactSet::tie_passes_at_), or null
   // when this pass does not tie.
   const std::uint8_t* ties_at = nullptr;
-  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data(), tie_damping.data()}; }
+  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data()}; }
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };
@@ -293,7 +292,6 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       if (ci.tiebreak.enabled()) {
         pr->tie_state.assign(ns, static_cast<std::int8_t>(TieState::free));
         pr->tie_gap0.assign(ns, 0.0);
-        pr->tie_damping.assign(ns, 0.0);
       }
       pr->prev_shape.assign(4 * ns, 0.0);
       pr->frame.assign(9 * ns, 0.0);
@@ -1223,6 +1221,9 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     double* rs = &pr.rs[3 * k];
     if (s < 0) {
       pr.surface_part[k] = 0.0;
+      // The law sees the stand-in gap: its last damping traction's second half (half a step's
+      // work of it) is not booked against that jump.
+      h.damping[k] = 0.0;
       pr.gap[k] = pr.far_gap;
       pr.arrival_depth[k] = 0.0;
       pr.slip_x[k] = pr.slip_y[k] = 0.0;
@@ -1542,8 +1543,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         if (pr.seg[k] >= 0 || static_cast<TieState>(pr.tie_state[k]) != TieState::tied)
           continue;
         pr.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
-        pr.tie_damping[k] = 0.0;
         pr.hist.e_damage[k] += pr.stored[k];
+        pr.hist.damping[k] = 0.0;
         pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
         pr.hist.beta[k] = 0.0;
         pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
@@ -1576,8 +1577,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         *a += b;
       law::BatchHistory ch = pr.hist;
       ch.state += b;
-      for (double** a : {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y,
-                         &ch.e_damage, &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing})
+      for (double** a :
+           {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
+            &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
         *a += b;
       const law::BatchOutput co{pr.pressure.data() + b, pr.tau_x.data() + b, pr.tau_y.data() + b,
                                 pr.stored.data() + b};
@@ -1585,8 +1587,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         pr.law.update_batch(ci, ch, co);
       } else {
         const TieArrays tie = pr.ties();
-        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch,
-                        {tie.state + b, tie.gap0 + b, tie.damping + b}, co);
+        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
       }
     }
 
@@ -1933,14 +1934,14 @@ void ContactSet::visit_state(core::StateArchive& a) {
                              {"e_viscous", h.e_viscous},
                              {"e_friction", h.e_friction},
                              {"e_damping", h.e_damping},
-                             {"e_healing", h.e_healing}}) {
+                             {"e_healing", h.e_healing},
+                             {"damping", h.damping}}) {
         a.fixed(std::string("law/") + name, std::span<double>(v, ns));
       }
     }
     a.fixed("friction_heated", std::span<double>(pr.friction_heated));
     a.fixed("tie_state", std::span<std::int8_t>(pr.tie_state));
     a.fixed("tie_gap0", std::span<double>(pr.tie_gap0));
-    a.fixed("tie_damping", std::span<double>(pr.tie_damping));
     a.array("cand_start", pr.cand_start);
     a.array("cand", pr.cand);
     a.array("seg_radius", pr.seg_radius);

@@ -11,7 +11,7 @@ void tie_node(const law::BatchHistory& h, const TieArrays& tie, std::size_t k, d
       static_cast<std::int32_t>(gap <= 0.0 ? law::NodeState::contact : law::NodeState::separating);
   h.beta[k] = 1.0;
   h.gap[k] = gap;
-  tie.damping[k] = 0.0;
+  h.damping[k] = 0.0;
   h.slip_x[k] = h.slip_y[k] = 0.0;
   h.opening_x[k] = h.opening_y[k] = 0.0;
 }
@@ -97,7 +97,8 @@ void tiebreak_update(const core::Tiebreak& tb, const law::Law& law, const law::B
     // the tie holds. Booked as c (dg/dt)^2 dt, the damper took (zeta omega dt) more than its
     // force did (1.5 % at zeta 0.1, omega dt 0.11).
     const double dg = g - h.gap[i];
-    h.e_damping[i] += 0.5 * tie.damping[i] * dg * a;
+    h.e_damping[i] += 0.5 * h.damping[i] * dg * a;
+    h.damping[i] = 0.0;
     double damping = 0.0;
     if (p.vdc > 0.0 && in.mass != nullptr && in.mass[i] > 0.0 && in.dt > 0.0 && a > 0.0) {
       const double c = 0.02 * p.vdc * std::sqrt(kn * in.mass[i] / a);
@@ -139,7 +140,6 @@ void tiebreak_update(const core::Tiebreak& tb, const law::Law& law, const law::B
       // The bond breaks: the springs' energy is released, and the node is an ordinary contact
       // node from this cycle on (no tension; friction only under pressure).
       tie.state[i] = static_cast<std::int8_t>(TieState::failed);
-      tie.damping[i] = 0.0;
       h.state[i] =
           static_cast<std::int32_t>(g <= 0.0 ? law::NodeState::contact : law::NodeState::detached);
       h.beta[i] = 0.0;
@@ -151,7 +151,7 @@ void tiebreak_update(const core::Tiebreak& tb, const law::Law& law, const law::B
       continue;
     }
     h.e_damping[i] += 0.5 * damping * dg * a;
-    tie.damping[i] = damping;
+    h.damping[i] = damping;
     h.slip_x[i] = s0;
     h.slip_y[i] = s1;
     h.gap[i] = g;

@@ -42,6 +42,7 @@ module plyform_law
     real(c_double) :: e_friction = 0.0_c_double
     real(c_double) :: e_damping = 0.0_c_double
     real(c_double) :: e_healing = 0.0_c_double
+    real(c_double) :: damping = 0.0_c_double
   end type
 
   type, bind(C), public :: plyform_law_increment
@@ -74,6 +75,7 @@ module plyform_law
     type(c_ptr) :: e_damping = c_null_ptr, e_healing = c_null_ptr
     type(c_ptr) :: pressure = c_null_ptr, tau_x = c_null_ptr, tau_y = c_null_ptr
     type(c_ptr) :: stored = c_null_ptr
+    type(c_ptr) :: damping = c_null_ptr
   end type
 
   public :: plyform_law_create, plyform_law_destroy, plyform_law_initial_history

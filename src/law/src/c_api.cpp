@@ -42,6 +42,7 @@ NodeHistory from_c(const plyform_law_history& c) {
   h.e_friction = c.e_friction;
   h.e_damping = c.e_damping;
   h.e_healing = c.e_healing;
+  h.damping = c.damping;
   return h;
 }
 
@@ -59,6 +60,7 @@ plyform_law_history to_c(const NodeHistory& h) {
   c.e_friction = h.e_friction;
   c.e_damping = h.e_damping;
   c.e_healing = h.e_healing;
+  c.damping = h.damping;
   return c;
 }
 
@@ -168,7 +170,7 @@ plyform_law_status plyform_law_update_batch(const plyform_law* law, const plyfor
       b->gap,       b->slip_x,    b->slip_y,   b->temperature, b->k_normal,    b->k_tangent,
       b->area,      b->state,     b->beta,     b->hist_gap,    b->hist_slip_x, b->hist_slip_y,
       b->opening_x, b->opening_y, b->e_damage, b->e_viscous,   b->e_friction,  b->e_damping,
-      b->e_healing, b->pressure,  b->tau_x,    b->tau_y};
+      b->e_healing, b->pressure,  b->tau_x,    b->tau_y,       b->damping};
   for (const void* ptr : required) {
     if (ptr == nullptr)
       return PLYFORM_LAW_INVALID_ARGUMENT;
@@ -189,7 +191,8 @@ plyform_law_status plyform_law_update_batch(const plyform_law* law, const plyfor
                                     b->dt};
   const plyform::law::BatchHistory h{b->state,       b->beta,       b->hist_gap,  b->hist_slip_x,
                                      b->hist_slip_y, b->opening_x,  b->opening_y, b->e_damage,
-                                     b->e_viscous,   b->e_friction, b->e_damping, b->e_healing};
+                                     b->e_viscous,   b->e_friction, b->e_damping, b->e_healing,
+                                     b->damping};
   const plyform::law::BatchOutput out{b->pressure, b->tau_x, b->tau_y, b->stored};
   law->law.update_batch(in, h, out);
   return PLYFORM_LAW_OK;

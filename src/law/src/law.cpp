@@ -61,6 +61,7 @@ struct BatchHistoryAccess {
   double& e_friction() const { return b.e_friction[i]; }
   double& e_damping() const { return b.e_damping[i]; }
   double& e_healing() const { return b.e_healing[i]; }
+  double& damping() const { return b.damping[i]; }
 };
 
 struct BatchInputAccess {
@@ -92,6 +93,7 @@ NodeHistory load_history(const BatchHistory& h, std::size_t i) {
   v.e_friction = h.e_friction[i];
   v.e_damping = h.e_damping[i];
   v.e_healing = h.e_healing[i];
+  v.damping = h.damping[i];
   return v;
 }
 
@@ -108,6 +110,7 @@ void store_history(const BatchHistory& h, std::size_t i, const NodeHistory& v) {
   h.e_friction[i] = v.e_friction;
   h.e_damping[i] = v.e_damping;
   h.e_healing[i] = v.e_healing;
+  h.damping[i] = v.damping;
 }
 
 void Law::update_batch(const BatchInput& in, const BatchHistory& h, const BatchOutput& out) const {
@@ -138,12 +141,14 @@ HistoryStore::HistoryStore(std::size_t count)
       e_viscous_(count, 0.0),
       e_friction_(count, 0.0),
       e_damping_(count, 0.0),
-      e_healing_(count, 0.0) {}
+      e_healing_(count, 0.0),
+      damping_(count, 0.0) {}
 
 BatchHistory HistoryStore::view() {
   return BatchHistory{state_.data(),     beta_.data(),       gap_.data(),       slip_x_.data(),
                       slip_y_.data(),    opening_x_.data(),  opening_y_.data(), e_damage_.data(),
-                      e_viscous_.data(), e_friction_.data(), e_damping_.data(), e_healing_.data()};
+                      e_viscous_.data(), e_friction_.data(), e_damping_.data(), e_healing_.data(),
+                      damping_.data()};
 }
 
 NodeHistory HistoryStore::get(std::size_t i) const {
@@ -160,6 +165,7 @@ NodeHistory HistoryStore::get(std::size_t i) const {
   v.e_friction = e_friction_[i];
   v.e_damping = e_damping_[i];
   v.e_healing = e_healing_[i];
+  v.damping = damping_[i];
   return v;
 }
 

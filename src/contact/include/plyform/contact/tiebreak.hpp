@@ -24,9 +24,6 @@ enum class TieState : std::int8_t {
 struct TieArrays {
   std::int8_t* state = nullptr;
   double* gap0 = nullptr;  ///< the gap the node was tied at (the springs' rest length)
-  /// The normal damping traction of the last cycle (VDC; positive against an opening gap):
-  /// the second half of its work is booked over the next step, as the contact's work is.
-  double* damping = nullptr;
 };
 
 /// Ties a node at its current gap: the law history says CONTACT (or SEPARATING when the gap is

@@ -54,6 +54,7 @@ struct BatchHistory {
   double* e_friction = nullptr;
   double* e_damping = nullptr;
   double* e_healing = nullptr;
+  double* damping = nullptr;  ///< NodeHistory::damping
 };
 
 /// Outputs of a batch. `stored` may be null.
@@ -77,7 +78,7 @@ class HistoryStore {
  private:
   std::vector<std::int32_t> state_;
   std::vector<double> beta_, gap_, slip_x_, slip_y_, opening_x_, opening_y_;
-  std::vector<double> e_damage_, e_viscous_, e_friction_, e_damping_, e_healing_;
+  std::vector<double> e_damage_, e_viscous_, e_friction_, e_damping_, e_healing_, damping_;
 };
 
 class Law {

@@ -44,6 +44,9 @@ struct NodeHistory {
   double e_friction = 0.0;       ///< frictional (Coulomb or film) dissipation [energy]
   double e_damping = 0.0;        ///< normal damping dissipation [energy]
   double e_healing = 0.0;  ///< adhesion energy restored by re-healing, omega * d beta [energy]
+  /// The normal damping traction of the last update (VDC) [stress]: its work over the next
+  /// step, the second half of the trapezoid the host books, goes to e_damping then.
+  double damping = 0.0;
 };
 
 /// What the host supplies for one node and one cycle.

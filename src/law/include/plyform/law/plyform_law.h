@@ -54,6 +54,7 @@ typedef struct plyform_law_history {
   double slip[2];
   double opening[2];
   double e_damage, e_viscous, e_friction, e_damping, e_healing;
+  double damping; /* the last normal damping traction (VDC): its work is booked with the next */
 } plyform_law_history;
 
 typedef struct plyform_law_increment {
@@ -93,7 +94,8 @@ plyform_law_status plyform_law_update_node(const plyform_law* law,
                                            plyform_law_response* response);
 
 /* Many nodes, one cycle, over host-owned arrays of length n (structure of arrays). `mass` and
- * `stored` may be NULL. `state` ... `e_healing` are the history, updated in place. */
+ * `stored` may be NULL. `state` ... `e_healing` and `damping` are the history, updated in
+ * place. */
 typedef struct plyform_law_batch {
   int64_t n;
   double dt;
@@ -102,6 +104,7 @@ typedef struct plyform_law_batch {
   double *beta, *hist_gap, *hist_slip_x, *hist_slip_y, *opening_x, *opening_y;
   double *e_damage, *e_viscous, *e_friction, *e_damping, *e_healing;
   double *pressure, *tau_x, *tau_y, *stored;
+  double* damping; /* history: the last normal damping traction (plyform_law_history) */
 } plyform_law_batch;
 
 plyform_law_status plyform_law_update_batch(const plyform_law* law, const plyform_law_batch* batch);
