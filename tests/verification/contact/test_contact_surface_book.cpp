@@ -13,6 +13,11 @@
 //   plane stress, small strain);
 // - the interface's books close: work + surface = stored (frictionless, undamped);
 // - with THKCHG 0 the offsets stay and the surface book stays at zero.
+// And the adhesion a bonded node takes with it when it slides off the master's edge (a skin's
+// edge passing the core's): a plate bonded by the cohesive law (sigma_max 1 MPa, C_N 100
+// MPa/mm: omega = sigma_max^2 / C_N = 0.01 mJ/mm^2), no tangential adhesion and no friction,
+// slid 4.5 mm along x so that its last two columns of nodes (13.5 mm^2) leave the master: the
+// surface book is omega times that area, the damage book the same, and the books close.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +99,51 @@ TEST(ContactSurfaceBook, AThinningPlateUnderPressureBooksThePressuresWorkOnItsOf
   const auto& held = fixed.sink.contact.back().second.at(0);
   EXPECT_NEAR(held.surface, 0.0, 1e-3 * std::abs(expected));
   EXPECT_NEAR(held.work, held.stored, 1e-3 * std::abs(expected));
+}
+
+TEST(ContactSurfaceBook, ABondedNodeThatSlidesOffTheMasterTakesItsAdhesionWithIt) {
+  constexpr double end = 4e-4, slide = 4.5, cn = 100.0, smax = 1.0;
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(end);
+  d.kw("*DATABASE_RCFORC").card(end / 100);
+  d.kw("*PART").kw("master").card(1, 1, 1);
+  d.kw("*PART").kw("slave").card(2, 1, 1);
+  d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
+  d.kw("*MAT_ELASTIC").card(1, 7.85e-9, 2.0e5, 0.3);
+  const auto master = d.plate(1, 1, 1, 0.0, 10.0, 0.0, 6.0, 8, 4, 0.0);
+  const auto slave = d.plate(2, 1001, 1001, 2.0, 8.0, 0.0, 6.0, 4, 4, 1.0);
+  d.kw("*SET_NODE_LIST").card(1).ids(master);
+  d.kw("*SET_NODE_LIST").card(2).ids(slave);
+  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 1, 1, 1, 1, 1, 1);
+  d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 1, 1, 1, 1, 1);
+  d.kw("*DEFINE_CURVE").card(2);
+  for (int i = 0; i <= 40; ++i) {
+    const double s = i / 40.0;
+    d.card(s * end, slide * s * s * (3.0 - 2.0 * s));
+  }
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 1, 2, 2, 1.0);
+  d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(3, "bonded layers");
+  d.card(2, 1, 3, 3).card(0).card(1, 1);
+  // UC1..UC20: MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC
+  // MU_LO MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
+  d.kw("*USER_INTERFACE_FRICTION").card(3, 20, 0);
+  d.card(1, cn, smax, smax, 100.0, 200.0, 1e-9, 0.0);
+  d.card(0.0, 1.0, 1e-3, 0, 0.0, 0.0, 0.0, 0.0);
+  d.card(0.0, 0.0, 1e-3, 0.0);
+  test::DeckRun r;
+  test::run_deck(d.text(), r);
+  ASSERT_FALSE(r.sink.contact.empty());
+  const auto& last = r.sink.contact.back().second.at(0);
+  const double omega = smax * smax / cn;
+  const double left = (0.75 + 1.5) * 6.0;  // the two columns beyond x = 10 at the end
+  EXPECT_NEAR(last.surface, omega * left, 1e-6 * omega * left);
+  EXPECT_NEAR(last.damage, omega * left, 1e-3 * omega * left);
+  for (const auto& [t, reports] : r.sink.contact) {
+    const auto& b = reports.at(0);
+    EXPECT_NEAR(b.work + b.surface, b.stored + b.damage + b.viscous + b.friction + b.damping,
+                1e-3 * omega * left)
+        << "t = " << t;
+  }
 }
 
 }  // namespace test_contact_surface_book
