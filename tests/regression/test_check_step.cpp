@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -81,6 +83,19 @@ double number_after(const std::string& text, const std::string& key) {
   const auto at = text.find(key);
   EXPECT_NE(at, std::string::npos) << key << " in\n" << text;
   return at == std::string::npos ? 0.0 : std::stod(text.substr(at + key.size()));
+}
+
+// Runs `deck` with `plyform run` into `outdir` and reads back its summary.json.
+void run_summary(const std::filesystem::path& deck, const std::filesystem::path& outdir,
+                 std::string& json) {
+  RunOptions o;
+  o.deck = deck;
+  o.output = outdir;
+  o.progress = false;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
+  std::ifstream in(outdir / "summary.json");
+  json.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 TEST(CheckShells, NamesTheBelytschkoTsayShells) {
@@ -161,16 +176,9 @@ TEST(CheckStep, AnnouncedCyclesAreTheRunsWithMassScaling) {
   const CheckRun r = check(deck);
   ASSERT_EQ(r.status, 0) << r.err;
   const double announced = number_after(r.out, "about ");
-  RunOptions o;
-  o.deck = deck;
-  o.output = dir.path() / "out";
-  o.progress = false;
-  std::ostringstream out, err;
-  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
-  std::ifstream in(*o.output / "summary.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const double cycles = number_after(json, "\"cycles\":");
-  EXPECT_NEAR(cycles, announced, 1.0) << json;
+  std::string json;
+  ASSERT_NO_FATAL_FAILURE(run_summary(deck, dir.path() / "out", json));
+  EXPECT_NEAR(number_after(json, "\"cycles\":"), announced, 1.0) << json;
 }
 
 // LCTM: a curve that caps the step at a quarter of the stable one for the first half of the
@@ -191,14 +199,8 @@ TEST(CheckStep, AStepCurveCapsTheAnnouncedAndTheRunsCycles) {
   const double announced = number_after(r.out, "about ");
   EXPECT_NEAR(announced, 2.5 * kEndTime / dt, 1e-2 * kEndTime / dt) << r.out;
   EXPECT_NE(r.out.find("with the largest step of the curve LCTM"), std::string::npos) << r.out;
-  RunOptions o;
-  o.deck = deck;
-  o.output = dir.path() / "out";
-  o.progress = false;
-  std::ostringstream out, err;
-  ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
-  std::ifstream in(*o.output / "summary.json");
-  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string json;
+  ASSERT_NO_FATAL_FAILURE(run_summary(deck, dir.path() / "out", json));
   EXPECT_NEAR(number_after(json, "\"cycles\":"), announced, 0.01 * announced) << json;
 }
 
