@@ -419,17 +419,16 @@ const double* at(const double* packed, core::Index node) {
 
 // Unit normal of a segment's mid-surface (N1 N2 N3 right hand), from its corner positions:
 // the cross product of the diagonals (of the two edges at N1 for a triangle).
-void segment_normal(const core::Index* q, const double* packed, double n[3]) {
-  const double *c0 = at(packed, q[0]), *c1 = at(packed, q[1]), *c2 = at(packed, q[2]),
-               *c3 = at(packed, q[3]);
+inline void segment_normal(const core::Index* q, const double* packed, double n[3]) {
+  const double *c0 = at(packed, q[0]), *c1 = at(packed, q[1]), *c2 = at(packed, q[2]);
   double a[3], b[3];
-  for (int d = 0; d < 3; ++d) {
-    a[d] = c2[d] - c0[d];
-    b[d] = q[2] == q[3] ? c2[d] - c1[d] : c3[d] - c1[d];
-  }
   if (q[2] == q[3]) {
     for (int d = 0; d < 3; ++d)
       a[d] = c1[d] - c0[d], b[d] = c2[d] - c0[d];
+  } else {
+    const double* c3 = at(packed, q[3]);
+    for (int d = 0; d < 3; ++d)
+      a[d] = c2[d] - c0[d], b[d] = c3[d] - c1[d];
   }
   n[0] = a[1] * b[2] - a[2] * b[1];
   n[1] = a[2] * b[0] - a[0] * b[2];
@@ -696,15 +695,24 @@ void update_folds(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nseg = pr.folded.size();
   std::vector<double>& c = pr.fold_centroid;
-  std::vector<double>& n = pr.fold_normal;
-  for (std::size_t sg = 0; sg < nseg; ++sg) {
+  // The segments' normals: this cycle's from update_master_normals() where the pass keeps them
+  // (the same numbers), else computed here.
+  const bool reuse = pr.seg_normal_current;
+  double* n = reuse ? pr.seg_normal.data() : pr.fold_normal.data();
+#pragma omp parallel for schedule(static)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto sg = static_cast<std::size_t>(ls);
     const core::Index* q = &cp.segments[4 * sg];
+    const double *x0 = at(packed, q[0]), *x1 = at(packed, q[1]), *x2 = at(packed, q[2]),
+                 *x3 = at(packed, q[3]);
     for (int i = 0; i < 3; ++i)
-      c[3 * sg + i] = 0.25 * (at(packed, q[0])[i] + at(packed, q[1])[i] + at(packed, q[2])[i] +
-                              at(packed, q[3])[i]);
-    segment_normal(q, packed, &n[3 * sg]);
+      c[3 * sg + i] = 0.25 * (x0[i] + x1[i] + x2[i] + x3[i]);
+    if (!reuse)
+      segment_normal(q, packed, &n[3 * sg]);
   }
-  for (std::size_t sg = 0; sg < nseg; ++sg) {
+#pragma omp parallel for schedule(static)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto sg = static_cast<std::size_t>(ls);
     unsigned char f = 0;
     const double* cs = &c[3 * sg];
     const double* ns = &n[3 * sg];
