@@ -19,6 +19,14 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kStride = 6;  // packed node data: x y z vx vy vz
 
+// Below these counts a loop runs on the calling thread alone: a parallel region's start and
+// join cost a few microseconds on a busy machine, more than a small loop's work. Light: a
+// loop of a few arithmetic operations per item (normals, folds, motion since the search);
+// heavy: a slave node's projection and kinematics, or its forces. Each item's arithmetic is
+// the same either way (the same bits for any thread count).
+constexpr std::size_t kLightLoop = 1024;
+constexpr std::size_t kHeavyLoop = 256;
+
 // Sums of per-slave values in fixed chunks, then the chunks in order: the same bits for any
 // number of threads.
 // `part`: a buffer kept by the caller (no allocation per cycle once it has grown).
@@ -699,7 +707,7 @@ void update_folds(PassRuntime& pr, const double* packed) {
   // (the same numbers), else computed here.
   const bool reuse = pr.seg_normal_current;
   double* n = reuse ? pr.seg_normal.data() : pr.fold_normal.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto sg = static_cast<std::size_t>(ls);
     const core::Index* q = &cp.segments[4 * sg];
@@ -710,7 +718,7 @@ void update_folds(PassRuntime& pr, const double* packed) {
     if (!reuse)
       segment_normal(q, packed, &n[3 * sg]);
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto sg = static_cast<std::size_t>(ls);
     unsigned char f = 0;
@@ -1053,13 +1061,13 @@ void search(PassRuntime& pr, const double* packed, const std::vector<double>& ma
 void update_master_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nseg = cp.segments.size() / 4;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto su = static_cast<std::size_t>(ls);
     segment_normal(&cp.segments[4 * su], packed, &pr.seg_normal[3 * su]);
   }
   const std::size_t nm = pr.master_nodes.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nm > kLightLoop)
   for (long li = 0; li < static_cast<long>(nm); ++li) {
     const auto i = static_cast<std::size_t>(li);
     double n0 = 0.0, n1 = 0.0, n2 = 0.0;
@@ -1079,13 +1087,13 @@ void update_master_normals(PassRuntime& pr, const double* packed) {
 void update_slave_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const std::size_t nf = cp.slave_faces.size() / 4;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nf > kLightLoop)
   for (long lf = 0; lf < static_cast<long>(nf); ++lf) {
     const auto f = static_cast<std::size_t>(lf);
     segment_normal(&cp.slave_faces[4 * f], packed, &pr.slave_face_normal[3 * f]);
   }
   const std::size_t ns = cp.slave_count();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ns > kLightLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     double n0 = 0.0, n1 = 0.0, n2 = 0.0;
@@ -1233,7 +1241,7 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   if (!cp.slave_face_start.empty() && dt > 0.0)
     update_slave_normals(pr, packed);
   update_folds(pr, packed);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     const core::Index node = cp.slave_nodes[k];
@@ -1594,7 +1602,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     ++pr.cycles_since_search;
     double moved = 0.0;
     const std::size_t nt = pr.tracked_nodes.size();
-#pragma omp parallel for schedule(static) reduction(max : moved)
+#pragma omp parallel for schedule(static) reduction(max : moved) if (nt > kLightLoop)
     for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
       const auto i = static_cast<std::size_t>(lt);
       const double* p = at(packed, pr.tracked_nodes[i]);
@@ -1669,7 +1677,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 
     pr.seconds[2] += clock.lap();
     // Forces from the tractions, and the second half of the step's work.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
       const auto k = static_cast<std::size_t>(lk);
       double* f = &pr.force[3 * k];
