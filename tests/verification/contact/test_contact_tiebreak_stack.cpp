@@ -17,9 +17,9 @@
 // - the central differences' kinetic book (1/2 m v_{n-1/2} . (2 v_n - v_{n-1/2})) turns
 //   markedly negative only for a mode at the edge of stability.
 // Each tie spring alone was inside the step's limit; the four at a core node together were not:
-// before their springs shared the budget (contact_set.cpp, tie_share) every tie failed within
-// 50 microseconds and the ties' interfaces gave 3.5 mJ to the motion by the end, twenty times
-// what the holder put in.
+// before their springs shared the budget (src/contact/src/penalty.cpp, tie_share) every tie failed
+// within 50 microseconds and the ties' interfaces gave 3.5 mJ to the motion by the end, twenty
+// times what the holder put in.
 #include <gtest/gtest.h>
 
 #include <algorithm>

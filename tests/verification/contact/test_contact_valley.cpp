@@ -4,7 +4,7 @@
 // the contact did equals the energy its springs hold (a conservation law), and where the node
 // passes from one segment to the other its gap does not jump. Reference: the stored energy of
 // the law, 1/2 k g^2 per node, against the trapezoidal work of the contact forces (docs/
-// contact.md). Before the node took the deeper of the two segments (contact_set.cpp,
+// contact.md). Before the node took the deeper of the two segments (projection.hpp,
 // deeper_across_valley) it kept the first segment while its projection stayed within MAXPAR of
 // it, and the gap jumped when it let go: energy the model was never given (81 % of the
 // springs' largest energy in this test; now 1e-6).

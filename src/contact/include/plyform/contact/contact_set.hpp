@@ -78,7 +78,7 @@ struct InterfaceTiming {
   double forces = 0.0;
 };
 
-struct PassRuntime;  // contact_set.cpp
+struct PassRuntime;  // src/pass_runtime.hpp
 
 /// The rotational freedoms of the model's nodes (shells): angular velocities of the step just
 /// taken, the internal-moment arrays (the engine's convention: w gains -I^-1 m dt) and the
@@ -171,7 +171,7 @@ class ContactSet {
   void follow_thickness(PassRuntime& pr) const;
   std::vector<std::unique_ptr<PassRuntime>> passes_;
   // Per model node: how many tiebreak passes hold it (empty without one). Their springs share
-  // one spring's stability budget at the node (contact_set.cpp, tie_share).
+  // one spring's stability budget at the node (penalty.cpp, tie_share).
   std::vector<std::uint8_t> tie_passes_at_;
   void count_tie_passes();
   std::vector<const double*> shell_thickness_;

@@ -1,0 +1,180 @@
+#include "surface_normals.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "surface_geometry.hpp"
+
+namespace plyform::contact {
+
+namespace {
+
+// Mean of the normals of `count` faces (4 node indices each, listed by `index`), each turned to
+// agree with the first, normalised; zero when there are none. The normals are summed in a fixed
+// (sorted) order, so the result does not depend on how a side lists its faces.
+template <class FaceOf>
+void mean_normal(std::size_t count, FaceOf&& face, const double* packed, double out[3]) {
+  out[0] = out[1] = out[2] = 0.0;
+  std::vector<std::array<double, 3>> normals(count);
+  for (std::size_t f = 0; f < count; ++f)
+    segment_normal(face(f), packed, normals[f].data());
+  std::sort(normals.begin(), normals.end());
+  for (const auto& n : normals) {
+    const double* first = normals.front().data();
+    const double sg = n[0] * first[0] + n[1] * first[1] + n[2] * first[2] < 0.0 ? -1.0 : 1.0;
+    out[0] += sg * n[0], out[1] += sg * n[1], out[2] += sg * n[2];
+  }
+  const double len = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+  if (len > 0.0)
+    out[0] /= len, out[1] /= len, out[2] /= len;
+}
+
+}  // namespace
+
+// Which segments have a neighbour out of their plane this cycle (its centroid off the plane by
+// more than sin 0.5 degree of the distance between the centroids): only a node on such a
+// segment looks across to its neighbours (deeper_across_valley), so flat and gently bent
+// surfaces (a DCB's arms) pay one load per node. Below that fold a gap's jump at a segment
+// change is under a hundredth of the overshoot MAXPAR allows.
+constexpr double kFoldSin2 = 7.6e-5;  // sin^2(0.5 degree)
+void update_folds(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t nseg = pr.folded.size();
+  std::vector<double>& c = pr.fold_centroid;
+  // The segments' normals: this cycle's from update_master_normals() where the pass keeps them
+  // (the same numbers), else computed here.
+  const bool reuse = pr.seg_normal_current;
+  double* n = reuse ? pr.seg_normal.data() : pr.fold_normal.data();
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto sg = static_cast<std::size_t>(ls);
+    const core::Index* q = &cp.segments[4 * sg];
+    const double *x0 = at(packed, q[0]), *x1 = at(packed, q[1]), *x2 = at(packed, q[2]),
+                 *x3 = at(packed, q[3]);
+    for (int i = 0; i < 3; ++i)
+      c[3 * sg + i] = 0.25 * (x0[i] + x1[i] + x2[i] + x3[i]);
+    if (!reuse)
+      segment_normal(q, packed, &n[3 * sg]);
+  }
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto sg = static_cast<std::size_t>(ls);
+    unsigned char f = 0;
+    const double* cs = &c[3 * sg];
+    const double* ns = &n[3 * sg];
+    for (std::size_t j = pr.nb_start[sg]; j < pr.nb_start[sg + 1] && !f; ++j) {
+      const double* co = &c[3 * static_cast<std::size_t>(pr.nb[j])];
+      const double d[3] = {co[0] - cs[0], co[1] - cs[1], co[2] - cs[2]};
+      const double off = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2];
+      f = off * off > kFoldSin2 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    pr.folded[sg] = f;
+  }
+}
+
+// The master's nodal normals at the current positions: the mean of the normals of the segments
+// around each node, each turned by its sign fixed at t = 0 (init_nodal_normals).
+void update_master_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t nseg = cp.segments.size() / 4;
+#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
+  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
+    const auto su = static_cast<std::size_t>(ls);
+    segment_normal(&cp.segments[4 * su], packed, &pr.seg_normal[3 * su]);
+  }
+  const std::size_t nm = pr.master_nodes.size();
+#pragma omp parallel for schedule(static) if (nm > kLightLoop)
+  for (long li = 0; li < static_cast<long>(nm); ++li) {
+    const auto i = static_cast<std::size_t>(li);
+    double n0 = 0.0, n1 = 0.0, n2 = 0.0;
+    for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
+      const double* ns = &pr.seg_normal[3 * static_cast<std::size_t>(pr.node_seg[e])];
+      const double sg = pr.node_seg_sign[e];
+      n0 += sg * ns[0], n1 += sg * ns[1], n2 += sg * ns[2];
+    }
+    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
+    const double inv = len > 0.0 ? 1.0 / len : 0.0;
+    double* out = &pr.master_normal[3 * i];
+    out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
+  }
+}
+
+// The slave nodes' normals at the current positions, from their faces (init_nodal_normals' signs).
+void update_slave_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t nf = cp.slave_faces.size() / 4;
+#pragma omp parallel for schedule(static) if (nf > kLightLoop)
+  for (long lf = 0; lf < static_cast<long>(nf); ++lf) {
+    const auto f = static_cast<std::size_t>(lf);
+    segment_normal(&cp.slave_faces[4 * f], packed, &pr.slave_face_normal[3 * f]);
+  }
+  const std::size_t ns = cp.slave_count();
+#pragma omp parallel for schedule(static) if (ns > kLightLoop)
+  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+    const auto k = static_cast<std::size_t>(lk);
+    double n0 = 0.0, n1 = 0.0, n2 = 0.0;
+    for (std::size_t e = cp.slave_face_start[k]; e < cp.slave_face_start[k + 1]; ++e) {
+      const double* nf3 =
+          &pr.slave_face_normal[3 * static_cast<std::size_t>(cp.slave_face_index[e])];
+      const double sg = pr.slave_face_sign[e];
+      n0 += sg * nf3[0], n1 += sg * nf3[1], n2 += sg * nf3[2];
+    }
+    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
+    const double inv = len > 0.0 ? 1.0 / len : 0.0;
+    double* out = &pr.slave_normal[3 * k];
+    out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
+  }
+}
+
+// The master's nodal normals at t = 0 (the mean normal of the faces around each node) and the
+// signs that turn each segment's normal to agree with them, kept for the run.
+void init_nodal_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
+    const std::size_t b = pr.node_seg_start[i];
+    mean_normal(
+        pr.node_seg_start[i + 1] - b,
+        [&](std::size_t f) {
+          return &cp.segments[4 * static_cast<std::size_t>(pr.node_seg[b + f])];
+        },
+        packed, &pr.master_normal[3 * i]);
+  }
+  // Each corner's nodal normal against its segment's normal: the sign that turns it to the side
+  // of the segment a slave node is on. Fixed: nodal normals and segments turn together.
+  for (std::size_t c = 0; c < pr.corner_sign.size(); ++c) {
+    double ns[3];
+    segment_normal(&cp.segments[c - c % 4], packed, ns);
+    const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[c])];
+    pr.corner_sign[c] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
+  }
+  for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
+    const double* d = &pr.master_normal[3 * i];
+    for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
+      double ns[3];
+      segment_normal(&cp.segments[4 * static_cast<std::size_t>(pr.node_seg[e])], packed, ns);
+      pr.node_seg_sign[e] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
+    }
+  }
+  if (cp.slave_face_start.empty())
+    return;
+  for (std::size_t k = 0; k < cp.slave_count(); ++k) {
+    const std::size_t b = cp.slave_face_start[k];
+    mean_normal(
+        cp.slave_face_start[k + 1] - b,
+        [&](std::size_t f) {
+          return &cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[b + f])];
+        },
+        packed, &pr.slave_normal[3 * k]);
+    const double* d = &pr.slave_normal[3 * k];
+    for (std::size_t e = b; e < cp.slave_face_start[k + 1]; ++e) {
+      double nf[3];
+      segment_normal(&cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[e])], packed,
+                     nf);
+      pr.slave_face_sign[e] = d[0] * nf[0] + d[1] * nf[1] + d[2] * nf[2] < 0.0 ? -1 : 1;
+    }
+  }
+}
+
+}  // namespace plyform::contact
