@@ -135,6 +135,10 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
           pr->nb_start[sg + 1] = pr->nb.size();
         }
         pr->folded.assign(nseg, 0);
+        pr->rigid_master = rigid != nullptr && !cp.segments.empty() &&
+                           std::all_of(cp.segments.begin(), cp.segments.end(), [&](core::Index n) {
+                             return rigid[static_cast<std::size_t>(n)] != 0;
+                           });
         pr->fold_centroid.assign(3 * nseg, 0.0);
         pr->fold_normal.assign(3 * nseg, 0.0);
       }

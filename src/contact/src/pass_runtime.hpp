@@ -74,6 +74,10 @@ struct PassRuntime {
   std::vector<core::Index> nb;
   std::vector<unsigned char> folded;
   std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
+  // Every master node is a rigid body's (a tool): its folds, once found, stay (update_folds).
+  // Not in the checkpoint: a restarted run finds them again.
+  bool rigid_master = false;
+  bool folds_fixed = false;
   std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
   std::vector<double> tracked_ref;         // their positions at the last search
   double margin = 0.0;

@@ -47,6 +47,10 @@ void update_folds(PassRuntime& pr, const double* packed) {
   // (the same numbers), else computed here.
   const bool reuse = pr.seg_normal_current;
   double* n = reuse ? pr.seg_normal.data() : pr.fold_normal.data();
+  // A rigid master's folds are those of its first cycle: a rigid motion turns a segment's
+  // normal and the offsets of its neighbours' centroids together. Its centroids (which
+  // rises_towards reads) move with it.
+  const bool fixed = pr.folds_fixed;
 #pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto sg = static_cast<std::size_t>(ls);
@@ -55,9 +59,12 @@ void update_folds(PassRuntime& pr, const double* packed) {
                  *x3 = at(packed, q[3]);
     for (int i = 0; i < 3; ++i)
       c[3 * sg + i] = 0.25 * (x0[i] + x1[i] + x2[i] + x3[i]);
-    if (!reuse)
+    if (!reuse && !fixed)
       segment_normal(q, packed, &n[3 * sg]);
   }
+  if (fixed)
+    return;
+  pr.folds_fixed = pr.rigid_master;
 #pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto sg = static_cast<std::size_t>(ls);
