@@ -21,14 +21,14 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     const core::ContactPass& cp = *pr.pass;
     const std::size_t ns = cp.slave_count();
     if (t < pr.iface->birth || t > pr.iface->death) {
-      pr.resultant = {0.0, 0.0, 0.0};
-      pr.master_resultant = {0.0, 0.0, 0.0};
-      std::fill(pr.prev_seg.begin(), pr.prev_seg.end(), -1);
-      pr.dt_last = 0.0;
+      pr.st.resultant = {0.0, 0.0, 0.0};
+      pr.st.master_resultant = {0.0, 0.0, 0.0};
+      std::fill(pr.st.prev_seg.begin(), pr.st.prev_seg.end(), -1);
+      pr.st.dt_last = 0.0;
       // An interface that is not there does not set the step; it searches (and votes) anew
       // once it is.
-      pr.dt_vote = kInf;
-      pr.searched = false;
+      pr.st.dt_vote = kInf;
+      pr.st.searched = false;
       continue;
     }
     core::Stopwatch clock;
@@ -36,35 +36,35 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       follow_thickness(pr);
     // Re-search once the contact nodes moved far enough to bring a slave node near a segment
     // outside its candidate list (or at the deck's fixed interval).
-    ++pr.cycles_since_search;
+    ++pr.st.cycles_since_search;
     double moved = 0.0;
     const std::size_t nt = pr.tracked_nodes.size();
 #pragma omp parallel for schedule(static) reduction(max : moved) if (nt > kLightLoop)
     for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
       const auto i = static_cast<std::size_t>(lt);
       const double* p = at(packed, pr.tracked_nodes[i]);
-      const double dx = p[0] - pr.tracked_ref[3 * i], dy = p[1] - pr.tracked_ref[3 * i + 1],
-                   dz = p[2] - pr.tracked_ref[3 * i + 2];
+      const double dx = p[0] - pr.st.tracked_ref[3 * i], dy = p[1] - pr.st.tracked_ref[3 * i + 1],
+                   dz = p[2] - pr.st.tracked_ref[3 * i + 2];
       moved = std::max(moved, dx * dx + dy * dy + dz * dz);
     }
     const int interval = pr.iface->search_interval;
-    if (!pr.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
-        (interval > 0 && pr.cycles_since_search >= interval)) {
+    if (!pr.st.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
+        (interval > 0 && pr.st.cycles_since_search >= interval)) {
       search(pr, packed, mass_, rigid_, rot_, tssfac_);
       ++searches_;
     }
     pr.seconds[0] += clock.lap();
 
     measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
-    pr.measured = true;
-    if (!pr.tie_state.empty()) {
+    pr.st.measured = true;
+    if (!pr.st.tie_state.empty()) {
       // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
       // springs held is released.
       for (std::size_t k = 0; k < ns; ++k) {
-        if (pr.seg[k] >= 0 || static_cast<TieState>(pr.tie_state[k]) != TieState::tied)
+        if (pr.st.seg[k] >= 0 || static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
           continue;
-        pr.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
-        pr.hist.e_damage[k] += pr.stored[k];
+        pr.st.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
+        pr.hist.e_damage[k] += pr.st.stored[k];
         pr.hist.damping[k] = 0.0;
         pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
         pr.hist.beta[k] = 0.0;
@@ -74,14 +74,14 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     pr.seconds[1] += clock.lap();
     law::BatchInput in;
     in.count = ns;
-    in.gap = pr.gap.data();
-    in.slip_x = pr.slip_x.data();
-    in.slip_y = pr.slip_y.data();
-    in.temperature = pr.temperature.data();
-    in.k_normal = pr.k_normal.data();
-    in.k_tangent = pr.k_tangent.data();
+    in.gap = pr.st.gap.data();
+    in.slip_x = pr.st.slip_x.data();
+    in.slip_y = pr.st.slip_y.data();
+    in.temperature = pr.st.temperature.data();
+    in.k_normal = pr.st.k_normal.data();
+    in.k_tangent = pr.st.k_tangent.data();
     in.area = cp.slave_area.data();
-    in.mass = pr.m_eff.data();
+    in.mass = pr.st.m_eff.data();
     in.dt = dt;
     // The law is immutable and every node's update independent: chunks of the batch run in
     // parallel (same arithmetic per node, so the same bits for any thread count).
@@ -102,9 +102,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
            {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
             &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
         *a += b;
-      const law::BatchOutput co{pr.pressure.data() + b, pr.tau_x.data() + b, pr.tau_y.data() + b,
-                                pr.stored.data() + b};
-      if (pr.tie_state.empty()) {
+      const law::BatchOutput co{pr.st.pressure.data() + b, pr.st.tau_x.data() + b,
+                                pr.st.tau_y.data() + b, pr.st.stored.data() + b};
+      if (pr.st.tie_state.empty()) {
         pr.law.update_batch(ci, ch, co);
       } else {
         const TieArrays tie = pr.ties();
@@ -117,43 +117,44 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
       const auto k = static_cast<std::size_t>(lk);
-      double* f = &pr.force[3 * k];
-      const core::Index s = pr.seg[k];
-      pr.end_power[k] = 0.0;
-      pr.surface_part[k] -= 0.5 * pr.pressure[k] * cp.slave_area[k] * pr.gap_jump[k];
+      double* f = &pr.st.force[3 * k];
+      const core::Index s = pr.st.seg[k];
+      pr.st.end_power[k] = 0.0;
+      pr.st.surface_part[k] -= 0.5 * pr.st.pressure[k] * cp.slave_area[k] * pr.st.gap_jump[k];
       if (s < 0) {
         f[0] = f[1] = f[2] = 0.0;
         continue;
       }
-      const double* fr = &pr.frame[9 * k];
+      const double* fr = &pr.st.frame[9 * k];
       const double a = cp.slave_area[k];
-      const double pn = pr.pressure[k] * a, t1 = pr.tau_x[k] * a, t2 = pr.tau_y[k] * a;
+      const double pn = pr.st.pressure[k] * a, t1 = pr.st.tau_x[k] * a, t2 = pr.st.tau_y[k] * a;
       for (int c = 0; c < 3; ++c)
         f[c] = pn * fr[c] + t1 * fr[3 + c] + t2 * fr[6 + c];
       if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
         continue;
       double du[3];
-      relative_velocity(pr, k, s, &pr.shape[4 * k], &pr.rs[3 * k], pr.side[k], fr, packed, rot_,
-                        du);
-      pr.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
-      pr.work_part[k] += 0.5 * dt * pr.end_power[k];
+      relative_velocity(pr, k, s, &pr.st.shape[4 * k], &pr.st.rs[3 * k], pr.st.side[k], fr, packed,
+                        rot_, du);
+      pr.st.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+      pr.st.work_part[k] += 0.5 * dt * pr.st.end_power[k];
     }
-    pr.dt_last = dt;
-    pr.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.work_part[k]; });
-    pr.surface += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.surface_part[k]; });
+    pr.st.dt_last = dt;
+    pr.st.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.st.work_part[k]; });
+    pr.st.surface +=
+        chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.st.surface_part[k]; });
 
     // Scatter in slave order: each node receives its contributions in the same order for any
     // number of threads.
     std::array<double, 3> r{}, rm{};
     const double sign = cp.slave_side_sign;
     for (std::size_t k = 0; k < ns; ++k) {
-      const core::Index s = pr.seg[k];
-      pr.prev_seg[k] = s;
+      const core::Index s = pr.st.seg[k];
+      pr.st.prev_seg[k] = s;
       if (s < 0)
         continue;
-      const double* f = &pr.force[3 * k];
+      const double* f = &pr.st.force[3 * k];
       if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0) {
-        pr.prev_seg[k] = -1;
+        pr.st.prev_seg[k] = -1;
         continue;
       }
       PLYFORM_INVARIANT(std::isfinite(f[0] + f[1] + f[2]), "a finite contact force");
@@ -166,11 +167,11 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       // tangential part (the part relative_velocity() lets the rotations move). The engine's
       // moment arrays are internal moments, like its force arrays.
       const bool spin = rot_.inertia != nullptr;
-      const double* fn = &pr.frame[9 * k];
+      const double* fn = &pr.st.frame[9 * k];
       const double f_n = f[0] * fn[0] + f[1] * fn[1] + f[2] * fn[2];
       const double ft[3] = {f[0] - f_n * fn[0], f[1] - f_n * fn[1], f[2] - f_n * fn[2]};
       if (spin && rot_.inertia[sn] > 0.0) {
-        const double* rs = &pr.rs[3 * k];
+        const double* rs = &pr.st.rs[3 * k];
         rot_.mx[sn] -= rs[1] * ft[2] - rs[2] * ft[1];
         rot_.my[sn] -= rs[2] * ft[0] - rs[0] * ft[2];
         rot_.mz[sn] -= rs[0] * ft[1] - rs[1] * ft[0];
@@ -178,16 +179,16 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       const auto su = static_cast<std::size_t>(s);
       const core::Index* q = &cp.segments[4 * su];
       const int nodes = q[2] == q[3] ? 3 : 4;
-      const double om = pr.seg_offset[su];
+      const double om = pr.st.seg_offset[su];
       for (int j = 0; j < nodes; ++j) {
-        const double nj = pr.shape[4 * k + j];
+        const double nj = pr.st.shape[4 * k + j];
         const auto m = static_cast<std::size_t>(q[j]);
         fx[m] += nj * f[0];
         fy[m] += nj * f[1];
         fz[m] += nj * f[2];
         if (spin && om > 0.0 && rot_.inertia[m] > 0.0) {
           double rm_[3];
-          corner_offset(pr, su, j, pr.side[k], rm_);
+          corner_offset(pr, su, j, pr.st.side[k], rm_);
           rot_.mx[m] += nj * (rm_[1] * ft[2] - rm_[2] * ft[1]);
           rot_.my[m] += nj * (rm_[2] * ft[0] - rm_[0] * ft[2]);
           rot_.mz[m] += nj * (rm_[0] * ft[1] - rm_[1] * ft[0]);
@@ -198,14 +199,14 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       for (int c = 0; c < 3; ++c)
         r[static_cast<std::size_t>(c)] += sign * f[c];
     }
-    pr.resultant = r;
-    pr.master_resultant = rm;
-    std::swap(pr.prev_force, pr.force);
-    std::swap(pr.prev_rs, pr.rs);
+    pr.st.resultant = r;
+    pr.st.master_resultant = rm;
+    std::swap(pr.st.prev_force, pr.st.force);
+    std::swap(pr.st.prev_rs, pr.st.rs);
     // `shape` then holds older values: measure() rewrites it for every located node, and
-    // only located nodes read it. Until the next apply(), the projection on pr.seg[k] is in
+    // only located nodes read it. Until the next apply(), the projection on pr.st.seg[k] is in
     // prev_shape (what the heat between cycles reads: located_shape()).
-    std::swap(pr.prev_shape, pr.shape);
+    std::swap(pr.st.prev_shape, pr.st.shape);
     pr.seconds[3] += clock.lap();
   }
 }

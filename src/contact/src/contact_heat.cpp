@@ -10,7 +10,7 @@ namespace plyform::contact {
 
 namespace {
 
-// The shape functions of slave k's projection on its segment pr.seg[k], as the heat reads
+// The shape functions of slave k's projection on its segment pr.st.seg[k], as the heat reads
 // them: the engine takes a thermal step between cycles, after the elements and before the
 // contact (Simulation::State::cycle_once), so the last projection is that of the last
 // apply(), which swapped it into prev_shape at the end of the pass (the arrays are swapped
@@ -19,7 +19,7 @@ namespace {
 // projection is start()'s, which measures without swapping: in shape. `measured` is set by
 // apply() only, in the same pass as the swap, and is in the checkpoint with both arrays.
 const double* located_shape(const PassRuntime& pr, std::size_t k) {
-  return pr.measured ? &pr.prev_shape[4 * k] : &pr.shape[4 * k];
+  return pr.st.measured ? &pr.st.prev_shape[4 * k] : &pr.st.shape[4 * k];
 }
 
 }  // namespace
@@ -56,8 +56,8 @@ void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatL
     const double share = heat.one_way ? 1.0 : 1.0 / static_cast<double>(heat_passes);
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
-      const core::Index sg = pr.seg[k];
-      if (sg < 0 || pr.gap[k] > heat.lmax)
+      const core::Index sg = pr.st.seg[k];
+      if (sg < 0 || pr.st.gap[k] > heat.lmax)
         continue;
       core::ContactHeatLink l;
       l.slave = pr.pass->slave_nodes[k];
@@ -86,8 +86,8 @@ void ContactSet::heat_links(const double* packed, std::vector<core::ContactHeatL
         }
       }
       l.area = share * area;
-      l.gap = pr.gap[k];
-      l.pressure = pr.pressure[k];
+      l.gap = pr.st.gap[k];
+      l.pressure = pr.st.pressure[k];
       l.heat = &heat;
       out.push_back(l);
     }
@@ -104,11 +104,11 @@ void ContactSet::take_friction_heat(std::vector<double>& energy) {
     const double to_slave = pr.pass->slave_side_sign > 0 ? heat.ftosa : 1.0 - heat.ftosa;
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
-      const double d = pr.hist.e_friction[k] - pr.friction_heated[k];
+      const double d = pr.hist.e_friction[k] - pr.st.friction_heated[k];
       if (d == 0.0)
         continue;
-      pr.friction_heated[k] = pr.hist.e_friction[k];
-      const core::Index sg = pr.seg[k];
+      pr.st.friction_heated[k] = pr.hist.e_friction[k];
+      const core::Index sg = pr.st.seg[k];
       const double slave_part = sg >= 0 ? to_slave : 1.0;
       energy[static_cast<std::size_t>(pr.pass->slave_nodes[k])] += slave_part * d;
       if (sg < 0)

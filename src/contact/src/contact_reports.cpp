@@ -11,14 +11,14 @@ namespace plyform::contact {
 double ContactSet::stable_step() const {
   double dt = kInf;
   for (const auto& p : passes_)
-    dt = std::min(dt, p->dt_vote);
+    dt = std::min(dt, p->st.dt_vote);
   return dt;
 }
 
 double ContactSet::energy() const {
   double e = 0.0;
   for (const auto& p : passes_)
-    e += p->work;
+    e += p->st.work;
   return e;
 }
 
@@ -54,15 +54,15 @@ std::vector<InterfaceReport> ContactSet::report() const {
     }
     InterfaceReport& r = out.back();
     for (std::size_t c = 0; c < 3; ++c) {
-      r.force[c] += pr.resultant[c];
-      r.master_force[c] += pr.master_resultant[c];
+      r.force[c] += pr.st.resultant[c];
+      r.master_force[c] += pr.st.master_resultant[c];
     }
-    r.work += pr.work;
-    r.surface += pr.surface;
+    r.work += pr.st.work;
+    r.surface += pr.st.surface;
     const law::BatchHistory& h = pr.hist;
     const std::size_t ns = pr.pass->slave_count();
     for (std::size_t k = 0; k < ns; ++k) {
-      r.stored += pr.stored[k];
+      r.stored += pr.st.stored[k];
       r.damage += h.e_damage[k];
       r.viscous += h.e_viscous[k];
       r.friction += h.e_friction[k];
@@ -71,7 +71,7 @@ std::vector<InterfaceReport> ContactSet::report() const {
       if (pr.guard)
         continue;  // the counts are the interface's points, the first pass's nodes
       const auto st = static_cast<law::NodeState>(h.state[k]);
-      if (st == law::NodeState::contact && pr.pressure[k] > 0.0)
+      if (st == law::NodeState::contact && pr.st.pressure[k] > 0.0)
         ++r.in_contact;
       if (st == law::NodeState::separating)
         ++r.bonded;
@@ -93,9 +93,9 @@ void ContactSet::cohesive_results(std::vector<SlaveNodeResult>& out) const {
       r.node = pr.pass->slave_nodes[k];
       r.interface = pr.iface->id;
       r.state = static_cast<law::NodeState>(pr.hist.state[k]);
-      r.gap = pr.seg[k] >= 0 ? pr.gap[k] : std::numeric_limits<double>::quiet_NaN();
-      r.pressure = pr.pressure[k];
-      r.tau = std::hypot(pr.tau_x[k], pr.tau_y[k]);
+      r.gap = pr.st.seg[k] >= 0 ? pr.st.gap[k] : std::numeric_limits<double>::quiet_NaN();
+      r.pressure = pr.st.pressure[k];
+      r.tau = std::hypot(pr.st.tau_x[k], pr.st.tau_y[k]);
       r.beta = pr.hist.beta[k];
       out.push_back(r);
     }

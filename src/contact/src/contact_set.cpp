@@ -103,8 +103,8 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       }
       pr->margin = nseg > 0 ? 0.5 * size_sum / static_cast<double>(nseg) : 0.0;
       pr->capture = capture;
-      pr->slave_offset = cp.slave_offset;
-      pr->seg_offset = cp.segment_offset;
+      pr->st.slave_offset = cp.slave_offset;
+      pr->st.seg_offset = cp.segment_offset;
       double max_slave_offset = 0.0;
       for (double o : cp.slave_offset)
         max_slave_offset = std::max(max_slave_offset, o);
@@ -142,13 +142,13 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         pr->fold_centroid.assign(3 * nseg, 0.0);
         pr->fold_normal.assign(3 * nseg, 0.0);
       }
-      pr->seg_radius.resize(nseg);
+      pr->st.seg_radius.resize(nseg);
       double max_radius = 0.0;
       for (std::size_t s = 0; s < nseg; ++s) {
         // A touching node is within the two offsets of the segment's mid-surface (a deeper
         // one is closer still); the cohesive band; the margin for motion between searches.
-        pr->seg_radius[s] = cp.segment_offset[s] + max_slave_offset + capture + pr->margin;
-        max_radius = std::max(max_radius, pr->seg_radius[s]);
+        pr->st.seg_radius[s] = cp.segment_offset[s] + max_slave_offset + capture + pr->margin;
+        max_radius = std::max(max_radius, pr->st.seg_radius[s]);
       }
       // Just beyond the band where the law releases a bonded node: the node is released, and
       // the elastic energy it is booked as giving up is that of its spring at the band's edge
@@ -165,29 +165,30 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         if (mark[i])
           pr->tracked_nodes.push_back(static_cast<core::Index>(i));
       }
-      pr->tracked_ref.assign(3 * pr->tracked_nodes.size(), 0.0);
-      pr->seg.assign(ns, -1);
-      pr->prev_seg.assign(ns, -1);
-      pr->shape.assign(4 * ns, 0.0);
-      pr->friction_heated.assign(ns, 0.0);
+      pr->st.tracked_ref.assign(3 * pr->tracked_nodes.size(), 0.0);
+      pr->st.seg.assign(ns, -1);
+      pr->st.prev_seg.assign(ns, -1);
+      pr->st.shape.assign(4 * ns, 0.0);
+      pr->st.friction_heated.assign(ns, 0.0);
       if (ci.tiebreak.enabled()) {
-        pr->tie_state.assign(ns, static_cast<std::int8_t>(TieState::free));
-        pr->tie_gap0.assign(ns, 0.0);
+        pr->st.tie_state.assign(ns, static_cast<std::int8_t>(TieState::free));
+        pr->st.tie_gap0.assign(ns, 0.0);
       }
-      pr->prev_shape.assign(4 * ns, 0.0);
-      pr->frame.assign(9 * ns, 0.0);
-      pr->side.assign(ns, 0);
+      pr->st.prev_shape.assign(4 * ns, 0.0);
+      pr->st.frame.assign(9 * ns, 0.0);
+      pr->st.side.assign(ns, 0);
       for (auto* v :
-           {&pr->gap, &pr->slip_x, &pr->slip_y, &pr->temperature, &pr->k_normal, &pr->k_tangent,
-            &pr->m_eff, &pr->pressure, &pr->tau_x, &pr->tau_y, &pr->stored, &pr->work_part,
-            &pr->end_power, &pr->arrival_depth, &pr->gap_jump, &pr->surface_part})
+           {&pr->st.gap, &pr->st.slip_x, &pr->st.slip_y, &pr->st.temperature, &pr->st.k_normal,
+            &pr->st.k_tangent, &pr->st.m_eff, &pr->st.pressure, &pr->st.tau_x, &pr->st.tau_y,
+            &pr->st.stored, &pr->st.work_part, &pr->st.end_power, &pr->st.arrival_depth,
+            &pr->st.gap_jump, &pr->st.surface_part})
         v->assign(ns, 0.0);
-      pr->force.assign(3 * ns, 0.0);
-      pr->prev_force.assign(3 * ns, 0.0);
-      pr->rs.assign(3 * ns, 0.0);
-      pr->prev_rs.assign(3 * ns, 0.0);
-      pr->slave_normal.assign(3 * ns, 0.0);
-      pr->slave_face_normal.assign(3 * (cp.slave_faces.size() / 4), 0.0);
+      pr->st.force.assign(3 * ns, 0.0);
+      pr->st.prev_force.assign(3 * ns, 0.0);
+      pr->st.rs.assign(3 * ns, 0.0);
+      pr->st.prev_rs.assign(3 * ns, 0.0);
+      pr->st.slave_normal.assign(3 * ns, 0.0);
+      pr->st.slave_face_normal.assign(3 * (cp.slave_faces.size() / 4), 0.0);
       pr->slave_face_sign.assign(cp.slave_face_index.size(), 1);
       pr->slave_face_normals_absent = cp.slave_face_start.empty() || cp.slave_face_index.empty();
       for (double o : cp.segment_offset)
@@ -223,8 +224,8 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
           const auto i = static_cast<std::size_t>(pr->corner[c]);
           pr->node_seg[fill[i]++] = static_cast<core::Index>(c / 4);
         }
-        pr->master_normal.assign(3 * pr->master_nodes.size(), 0.0);
-        pr->seg_normal.assign(3 * (cp.segments.size() / 4), 0.0);
+        pr->st.master_normal.assign(3 * pr->master_nodes.size(), 0.0);
+        pr->st.seg_normal.assign(3 * (cp.segments.size() / 4), 0.0);
         pr->corner_sign.assign(cp.segments.size(), 1);
         pr->node_seg_sign.assign(pr->node_seg.size(), 1);
       }
@@ -238,7 +239,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
 void ContactSet::count_tie_passes() {
   std::vector<char> mark;
   for (const auto& pr : passes_) {
-    if (pr->tie_state.empty())
+    if (pr->st.tie_state.empty())
       continue;
     if (tie_passes_at_.empty())
       tie_passes_at_.assign(model_.node_count(), 0);
@@ -271,7 +272,7 @@ void ContactSet::follow_thickness(PassRuntime& pr) const {
   };
   for (std::size_t s = 0; s < cp.segment_shell.size(); ++s) {
     if (cp.segment_shell[s] >= 0)
-      pr.seg_offset[s] = cp.segment_offset_factor[s] * t(cp.segment_shell[s]);
+      pr.st.seg_offset[s] = cp.segment_offset_factor[s] * t(cp.segment_shell[s]);
   }
   const std::size_t ns = cp.slave_count();
   for (std::size_t k = 0; k < ns; ++k) {
@@ -281,7 +282,7 @@ void ContactSet::follow_thickness(PassRuntime& pr) const {
     double sum = 0.0;
     for (std::size_t j = b; j < e; ++j)
       sum += t(cp.slave_shells[j]);
-    pr.slave_offset[k] = cp.slave_offset_factor[k] * sum / static_cast<double>(e - b);
+    pr.st.slave_offset[k] = cp.slave_offset_factor[k] * sum / static_cast<double>(e - b);
   }
 }
 

@@ -33,57 +33,61 @@ void ContactSet::visit_state(core::StateArchive& a) {
         a.fixed(std::string("law/") + name, std::span<double>(v, ns));
       }
     }
-    a.fixed("friction_heated", std::span<double>(pr.friction_heated));
-    a.fixed("tie_state", std::span<std::int8_t>(pr.tie_state));
-    a.fixed("tie_gap0", std::span<double>(pr.tie_gap0));
-    a.array("cand_start", pr.cand_start);
-    a.array("cand", pr.cand);
-    a.array("seg_radius", pr.seg_radius);
-    a.array("tracked_ref", pr.tracked_ref);
-    a.value("cycles_since_search", pr.cycles_since_search);
-    a.value("searched", pr.searched);
-    a.value("dt_vote", pr.dt_vote);
-    a.value("measured", pr.measured);
-    a.value("work", pr.work);
-    a.value("surface", pr.surface);
-    a.value("dt_last", pr.dt_last);
-    a.value("resultant", pr.resultant);
-    a.value("master_resultant", pr.master_resultant);
-    a.value("seg_normal_current", pr.seg_normal_current);
-    a.array("seg", pr.seg);
-    a.array("prev_seg", pr.prev_seg);
-    a.array("side", pr.side);
-    for (auto [name, v] : {std::pair{"slave_offset", &pr.slave_offset},
-                           {"seg_offset", &pr.seg_offset},
-                           {"shape", &pr.shape},
-                           {"prev_shape", &pr.prev_shape},
-                           {"frame", &pr.frame},
-                           {"gap", &pr.gap},
-                           {"slip_x", &pr.slip_x},
-                           {"slip_y", &pr.slip_y},
-                           {"temperature", &pr.temperature},
-                           {"k_normal", &pr.k_normal},
-                           {"k_tangent", &pr.k_tangent},
-                           {"m_eff", &pr.m_eff},
-                           {"arrival_depth", &pr.arrival_depth},
-                           {"pressure", &pr.pressure},
-                           {"tau_x", &pr.tau_x},
-                           {"tau_y", &pr.tau_y},
-                           {"stored", &pr.stored},
-                           {"force", &pr.force},
-                           {"prev_force", &pr.prev_force},
-                           {"work_part", &pr.work_part},
-                           {"gap_jump", &pr.gap_jump},
-                           {"surface_part", &pr.surface_part},
-                           {"end_power", &pr.end_power},
-                           {"master_normal", &pr.master_normal},
-                           {"seg_normal", &pr.seg_normal},
-                           {"slave_normal", &pr.slave_normal},
-                           {"slave_face_normal", &pr.slave_face_normal},
-                           {"rs", &pr.rs},
-                           {"prev_rs", &pr.prev_rs}}) {
-      a.array(name, *v);
-    }
+    pr.st.visit(a);
+  }
+}
+
+void PassState::visit(core::StateArchive& a) {
+  a.fixed("friction_heated", std::span<double>(friction_heated));
+  a.fixed("tie_state", std::span<std::int8_t>(tie_state));
+  a.fixed("tie_gap0", std::span<double>(tie_gap0));
+  a.array("cand_start", cand_start);
+  a.array("cand", cand);
+  a.array("seg_radius", seg_radius);
+  a.array("tracked_ref", tracked_ref);
+  a.value("cycles_since_search", cycles_since_search);
+  a.value("searched", searched);
+  a.value("dt_vote", dt_vote);
+  a.value("measured", measured);
+  a.value("work", work);
+  a.value("surface", surface);
+  a.value("dt_last", dt_last);
+  a.value("resultant", resultant);
+  a.value("master_resultant", master_resultant);
+  a.value("seg_normal_current", seg_normal_current);
+  a.array("seg", seg);
+  a.array("prev_seg", prev_seg);
+  a.array("side", side);
+  for (auto [name, v] : {std::pair{"slave_offset", &slave_offset},
+                         {"seg_offset", &seg_offset},
+                         {"shape", &shape},
+                         {"prev_shape", &prev_shape},
+                         {"frame", &frame},
+                         {"gap", &gap},
+                         {"slip_x", &slip_x},
+                         {"slip_y", &slip_y},
+                         {"temperature", &temperature},
+                         {"k_normal", &k_normal},
+                         {"k_tangent", &k_tangent},
+                         {"m_eff", &m_eff},
+                         {"arrival_depth", &arrival_depth},
+                         {"pressure", &pressure},
+                         {"tau_x", &tau_x},
+                         {"tau_y", &tau_y},
+                         {"stored", &stored},
+                         {"force", &force},
+                         {"prev_force", &prev_force},
+                         {"work_part", &work_part},
+                         {"gap_jump", &gap_jump},
+                         {"surface_part", &surface_part},
+                         {"end_power", &end_power},
+                         {"master_normal", &master_normal},
+                         {"seg_normal", &seg_normal},
+                         {"slave_normal", &slave_normal},
+                         {"slave_face_normal", &slave_face_normal},
+                         {"rs", &rs},
+                         {"prev_rs", &prev_rs}}) {
+    a.array(name, *v);
   }
 }
 

@@ -21,7 +21,7 @@ void tie_initial_contacts(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const TieArrays tie = pr.ties();
   for (std::size_t k = 0; k < cp.slave_count(); ++k) {
-    const core::Index s = pr.seg[k];
+    const core::Index s = pr.st.seg[k];
     if (s < 0)
       continue;
     const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
@@ -32,8 +32,8 @@ void tie_initial_contacts(PassRuntime& pr, const double* packed) {
     // A triangle (N3 = N4): its shortest edge at N1 stands in for the diagonal.
     const double diagonal = q[2] == q[3] ? std::min(dist(q[0], q[1]), dist(q[0], q[2]))
                                          : std::min(dist(q[0], q[2]), dist(q[1], q[3]));
-    if (std::abs(pr.gap[k]) <= 0.05 * diagonal)
-      tie_node(pr.hist, tie, k, pr.gap[k]);
+    if (std::abs(pr.st.gap[k]) <= 0.05 * diagonal)
+      tie_node(pr.hist, tie, k, pr.st.gap[k]);
   }
 }
 
@@ -47,18 +47,18 @@ void track_initial_penetrations(PassRuntime& pr, const double* packed, const cor
   std::size_t count = 0, listed = 0;
   double deepest = 0.0;
   for (std::size_t k = 0; k < cp.slave_count(); ++k) {
-    if (pr.seg[k] < 0 || pr.gap[k] >= 0.0)
+    if (pr.st.seg[k] < 0 || pr.st.gap[k] >= 0.0)
       continue;
-    const double g = pr.gap[k];
-    pr.arrival_depth[k] = g;
-    pr.gap[k] = 0.0;
+    const double g = pr.st.gap[k];
+    pr.st.arrival_depth[k] = g;
+    pr.st.gap[k] = 0.0;
     ++count;
     deepest = std::min(deepest, g);
     if (pr.iface->ignore == 2 && listed < 50) {
       ++listed;
       const core::Index node = cp.slave_nodes[k];
       const double* p = at(packed, node);
-      const double* n = &pr.frame[9 * k];  // towards the slave's side
+      const double* n = &pr.st.frame[9 * k];  // towards the slave's side
       std::ostringstream os;
       os << pr.iface->keyword << " " << pr.iface->id << ": node "
          << model.node_id[static_cast<std::size_t>(node)] << " penetrates " << -g << " at (" << p[0]
@@ -97,7 +97,7 @@ void ContactSet::start(const double* packed, bool track_leftovers) {
     if (pr.iface->ignore > 0 || (track_leftovers && pr.iface->leftovers_tracked &&
                                  !pr.iface->cohesive && !pr.iface->tiebreak.enabled()))
       track_initial_penetrations(pr, packed, model_, warnings_);
-    pr.law.initialize_batch(ns, pr.gap.data(), pr.hist);
+    pr.law.initialize_batch(ns, pr.st.gap.data(), pr.hist);
     if (pr.iface->tiebreak.enabled())
       tie_initial_contacts(pr, packed);
     // Initial penetrations of nodes that are not bonded: the penalty will push them out in
@@ -108,16 +108,16 @@ void ContactSet::start(const double* packed, bool track_leftovers) {
     for (std::size_t k = 0; k < ns; ++k) {
       // Round-off of nodes placed on the surface (or moved onto it, IGNORE = 0) is no
       // penetration.
-      if (pr.seg[k] < 0 || pr.gap[k] >= -1e-9 * pr.margin)
+      if (pr.st.seg[k] < 0 || pr.st.gap[k] >= -1e-9 * pr.margin)
         continue;
       if (static_cast<law::NodeState>(pr.hist.state[k]) == law::NodeState::contact && pr.bonds &&
-          pr.law.parameters().bond_tol >= -pr.gap[k])
+          pr.law.parameters().bond_tol >= -pr.st.gap[k])
         continue;  // bonded at t = 0 within BOND_TOL
-      if (!pr.tie_state.empty() && static_cast<TieState>(pr.tie_state[k]) == TieState::tied)
+      if (!pr.st.tie_state.empty() && static_cast<TieState>(pr.st.tie_state[k]) == TieState::tied)
         continue;  // tied where it is
       ++count;
-      if (pr.gap[k] < deepest) {
-        deepest = pr.gap[k];
+      if (pr.st.gap[k] < deepest) {
+        deepest = pr.st.gap[k];
         where = pr.pass->slave_nodes[k];
       }
     }
@@ -143,18 +143,18 @@ void ContactSet::initial_penetrations(std::vector<InitialPenetration>& out) cons
     };
     for (std::size_t k = 0; k < pr.pass->slave_count(); ++k) {
       const core::Index node = pr.pass->slave_nodes[k];
-      if (pr.seg[k] < 0 || !(pr.gap[k] < 0.0))
+      if (pr.st.seg[k] < 0 || !(pr.st.gap[k] < 0.0))
         continue;
-      if (!pr.tie_state.empty() && static_cast<TieState>(pr.tie_state[k]) == TieState::tied)
+      if (!pr.st.tie_state.empty() && static_cast<TieState>(pr.st.tie_state[k]) == TieState::tied)
         continue;
-      const double* n = &pr.frame[9 * k];  // towards the slave's side
-      const double d = -pr.gap[k];
+      const double* n = &pr.st.frame[9 * k];  // towards the slave's side
+      const double d = -pr.st.gap[k];
       if (!is_rigid(node)) {
         out.push_back({node, index, d, {d * n[0], d * n[1], d * n[2]}});
         continue;
       }
       // A rigid node (a tool's) in a deformable surface: that surface's nodes move away.
-      const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(pr.seg[k])];
+      const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(pr.st.seg[k])];
       for (int j = 0; j < (q[2] == q[3] ? 3 : 4); ++j) {
         if (!is_rigid(q[j]))
           out.push_back({q[j], index, d, {-d * n[0], -d * n[1], -d * n[2]}});

@@ -54,16 +54,16 @@ inline void carry_tangential_history(const law::BatchHistory& h, std::size_t k,
 void leave_master_bonded(PassRuntime& pr, std::size_t k) {
   const law::BatchHistory& h = pr.hist;
   const law::Parameters& p = pr.law.parameters();
-  const double smax = law::evaluate(p.sigma_max, p, pr.temperature[k]);
+  const double smax = law::evaluate(p.sigma_max, p, pr.st.temperature[k]);
   const double area = pr.pass->slave_area[k];
   const double adhesion = smax * smax / p.cn * h.beta[k] * area;
   // The stick spring's share is friction's, as when the law lets a node out of contact (it
   // turns to heat with the friction).
   const double stick =
-      0.5 * pr.k_tangent[k] * (h.slip_x[k] * h.slip_x[k] + h.slip_y[k] * h.slip_y[k]) * area;
+      0.5 * pr.st.k_tangent[k] * (h.slip_x[k] * h.slip_x[k] + h.slip_y[k] * h.slip_y[k]) * area;
   h.e_friction[k] += stick;
-  h.e_damage[k] += pr.stored[k] - stick + adhesion;
-  pr.surface_part[k] += adhesion;
+  h.e_damage[k] += pr.st.stored[k] - stick + adhesion;
+  pr.st.surface_part[k] += adhesion;
   h.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
   h.beta[k] = 0.0;
   h.slip_x[k] = h.slip_y[k] = 0.0;
@@ -76,10 +76,10 @@ void leave_master_bonded(PassRuntime& pr, std::size_t k) {
 // coarse hot draw's holder contact fell 1.6 % below its work by such steps of 5-15 mJ.
 void leave_master_pressed(PassRuntime& pr, std::size_t k) {
   const law::BatchHistory& h = pr.hist;
-  const double stick = 0.5 * pr.k_tangent[k] *
+  const double stick = 0.5 * pr.st.k_tangent[k] *
                        (h.slip_x[k] * h.slip_x[k] + h.slip_y[k] * h.slip_y[k]) *
                        pr.pass->slave_area[k];
-  pr.surface_part[k] -= pr.stored[k] - stick;
+  pr.st.surface_part[k] -= pr.st.stored[k] - stick;
 }
 
 }  // namespace
@@ -91,8 +91,8 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
   const core::ContactPass& cp = *pr.pass;
   const std::size_t ns = cp.slave_count();
   const law::BatchHistory& h = pr.hist;
-  pr.seg_normal_current = pr.master_offsets && dt > 0.0;
-  if (pr.seg_normal_current)
+  pr.st.seg_normal_current = pr.master_offsets && dt > 0.0;
+  if (pr.st.seg_normal_current)
     update_master_normals(pr, packed);
   if (!cp.slave_face_start.empty() && dt > 0.0)
     update_slave_normals(pr, packed);
@@ -111,55 +111,57 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // cycle's point, and last cycle's normal: the surface book's tangential half below.
     double tau_before[3] = {0.0, 0.0, 0.0}, n_before[3] = {0.0, 0.0, 0.0};
     double slid_before = 0.0;
-    if (pr.prev_seg[k] >= 0) {
-      const double* f = &pr.prev_force[3 * k];
+    if (pr.st.prev_seg[k] >= 0) {
+      const double* f = &pr.st.prev_force[3 * k];
       double du[3];
-      relative_velocity(pr, k, pr.prev_seg[k], &pr.prev_shape[4 * k], &pr.prev_rs[3 * k],
-                        pr.side[k], &pr.frame[9 * k], packed, rot, du);
-      const double* fr0 = &pr.frame[9 * k];
+      relative_velocity(pr, k, pr.st.prev_seg[k], &pr.st.prev_shape[4 * k], &pr.st.prev_rs[3 * k],
+                        pr.st.side[k], &pr.st.frame[9 * k], packed, rot, du);
+      const double* fr0 = &pr.st.frame[9 * k];
       for (int d = 0; d < 3; ++d) {
         n_before[d] = fr0[d];
-        tau_before[d] = pr.tau_x[k] * fr0[3 + d] + pr.tau_y[k] * fr0[6 + d];
+        tau_before[d] = pr.st.tau_x[k] * fr0[3 + d] + pr.st.tau_y[k] * fr0[6 + d];
       }
       moved_before = dt * (du[0] * n_before[0] + du[1] * n_before[1] + du[2] * n_before[2]);
       slid_before = dt * (du[0] * tau_before[0] + du[1] * tau_before[1] + du[2] * tau_before[2]);
       const double start_power = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
       w += 0.5 * dt * start_power;
-      if (pr.dt_last > 0.0)
-        w += 0.25 * (dt - pr.dt_last) * (pr.end_power[k] - start_power);
+      if (pr.st.dt_last > 0.0)
+        w += 0.25 * (dt - pr.st.dt_last) * (pr.st.end_power[k] - start_power);
     }
-    pr.work_part[k] = w;
-    pr.gap_jump[k] = 0.0;
-    pr.temperature[k] = temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
+    pr.st.work_part[k] = w;
+    pr.st.gap_jump[k] = 0.0;
+    pr.st.temperature[k] =
+        temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
     const auto state = static_cast<law::NodeState>(h.state[k]);
     const bool free = state == law::NodeState::approaching || state == law::NodeState::detached;
-    const bool was_located = pr.seg[k] >= 0;
+    const bool was_located = pr.st.seg[k] >= 0;
     Located L;
     const core::Index s = locate(pr, k, free, was_located, packed, L);
-    pr.seg[k] = s;
-    double* rs = &pr.rs[3 * k];
+    pr.st.seg[k] = s;
+    double* rs = &pr.st.rs[3 * k];
     if (s < 0) {
-      pr.surface_part[k] = 0.0;
+      pr.st.surface_part[k] = 0.0;
       // The law sees the stand-in gap: its last damping traction's second half (half a step's
       // work of it) is not booked against that jump.
       h.damping[k] = 0.0;
       if (was_located && !free) {
         if (pr.bonds && h.beta[k] > 0.0)
           leave_master_bonded(pr, k);
-        else if (pr.tie_state.empty() || static_cast<TieState>(pr.tie_state[k]) != TieState::tied)
+        else if (pr.st.tie_state.empty() ||
+                 static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
           leave_master_pressed(pr, k);
       }
-      pr.gap[k] = pr.far_gap;
-      pr.arrival_depth[k] = 0.0;
-      pr.slip_x[k] = pr.slip_y[k] = 0.0;
-      pr.m_eff[k] = 0.0;
+      pr.st.gap[k] = pr.far_gap;
+      pr.st.arrival_depth[k] = 0.0;
+      pr.st.slip_x[k] = pr.st.slip_y[k] = 0.0;
+      pr.st.m_eff[k] = 0.0;
       rs[0] = rs[1] = rs[2] = 0.0;
       continue;
     }
     const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
     for (int j = 0; j < 4; ++j)
-      pr.shape[4 * k + j] = L.sp.shape[j];
-    pr.side[k] = L.side;
+      pr.st.shape[4 * k + j] = L.sp.shape[j];
+    pr.st.side[k] = L.side;
     rs[0] = L.rs[0], rs[1] = L.rs[1], rs[2] = L.rs[2];
     // A node that comes onto the master from beyond its edge (a layer's edge sliding back over
     // the layer below, a sheet coming round a tool's edge) may arrive inside the band of the
@@ -171,28 +173,29 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
     // the usual rule resumes once the node is clear. Penetrations at t = 0 are pushed out, as
     // LS-DYNA does with IGNORE = 0.
     const double g = L.side * L.sp.distance;
-    double& tol = pr.arrival_depth[k];
-    const double band = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
+    double& tol = pr.st.arrival_depth[k];
+    const double band = pr.st.slave_offset[k] + pr.st.seg_offset[static_cast<std::size_t>(s)];
     const double push = 0.01 * band;
     // A located node arrives too when its depth jumps by half the band or more in one cycle,
     // which no motion does: it took another surface's segment (an intersecting part) whose
     // band it was inside already, or its segment turned over (a crushed fold's quadrilateral
     // flips its normal); the penalty would fire the node out (the crush box deck: 1.3 mm deep
     // at once, 150 mm/ms; a segment flipped under a node 9 mm above it, 12 mm deep, 17 kJ).
-    const double g_before = pr.gap[k] + tol;
+    const double g_before = pr.st.gap[k] + tol;
     const bool jumped = was_located && band > 0.0 && g < g_before - 0.5 * band;
-    if (((!was_located && pr.measured) || jumped) && g < -push)
+    if (((!was_located && pr.st.measured) || jumped) && g < -push)
       tol = std::min(tol, g + push);
     else if (tol < 0.0 && g > tol)
       tol = g < 0.0 ? g : 0.0;
-    pr.gap[k] = g - tol;
+    pr.st.gap[k] = g - tol;
     // A guard acts only beyond kGuardDepth of the two offsets' depth.
     if (pr.guard)
-      pr.gap[k] += kGuardDepth * (pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)]);
+      pr.st.gap[k] +=
+          kGuardDepth * (pr.st.slave_offset[k] + pr.st.seg_offset[static_cast<std::size_t>(s)]);
     // Its last gap was the stand-in `far_gap`: start the gap rate (normal damping) afresh.
     if (!was_located)
-      h.gap[k] = pr.gap[k];
-    double* fr = &pr.frame[9 * k];
+      h.gap[k] = pr.st.gap[k];
+    double* fr = &pr.st.frame[9 * k];
     const double n[3] = {L.side * L.sp.normal[0], L.side * L.sp.normal[1], L.side * L.sp.normal[2]};
     // Tangent axes from the global x axis (y where the normal is close to x): continuous as
     // the node moves from segment to segment, so the stick spring keeps its meaning.
@@ -228,18 +231,19 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
       if (nj > 0.0)
         mm += nj * node_mass(mass, rigid, q[j]);
     }
-    pr.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
-    pr.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
-    // The surface book: the law's gap changed by pr.gap - h.gap over the step, the nodes'
+    pr.st.slip_x[k] = dt * (du[0] * e1[0] + du[1] * e1[1] + du[2] * e1[2]);
+    pr.st.slip_y[k] = dt * (du[0] * e2[0] + du[1] * e2[1] + du[2] * e2[2]);
+    // The surface book: the law's gap changed by pr.st.gap - h.gap over the step, the nodes'
     // motion moved it by dt du . n; the rest no work of the nodes paid for. Each half of the
     // step's work is measured as the work is: last cycle's pressure with last cycle's point and
     // normal (the pressure still last cycle's here), this cycle's with this cycle's (the force
     // loop). A node found again starts afresh.
-    pr.surface_part[k] = 0.0;
+    pr.st.surface_part[k] = 0.0;
     if (was_located) {
-      const double changed = pr.gap[k] - h.gap[k];
-      pr.gap_jump[k] = changed - dt * (du[0] * n[0] + du[1] * n[1] + du[2] * n[2]);
-      pr.surface_part[k] = -0.5 * pr.pressure[k] * cp.slave_area[k] * (changed - moved_before);
+      const double changed = pr.st.gap[k] - h.gap[k];
+      pr.st.gap_jump[k] = changed - dt * (du[0] * n[0] + du[1] * n[1] + du[2] * n[2]);
+      pr.st.surface_part[k] =
+          -0.5 * pr.st.pressure[k] * cp.slave_area[k] * (changed - moved_before);
       // Tangential: the law works last cycle's traction, carried into this cycle's frame (as
       // carry_tangential_history carries its springs), on this cycle's slip; the nodes moved
       // under it at last cycle's point and frame. Where a node passes between facets at an
@@ -254,16 +258,16 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
           v[d] -= vn * (n_before[d] + n[d]);
         slid = dt * (v[0] * du[0] + v[1] * du[1] + v[2] * du[2]);
       }
-      pr.surface_part[k] -= 0.5 * cp.slave_area[k] * (slid - slid_before);
+      pr.st.surface_part[k] -= 0.5 * cp.slave_area[k] * (slid - slid_before);
     }
     const double me = effective_mass(node_mass(mass, rigid, node), mm);
-    pr.m_eff[k] = me;
+    pr.st.m_eff[k] = me;
     const double kk = penalty(pr, k, s, me);
-    pr.k_normal[k] = kk / cp.slave_area[k];
-    pr.k_tangent[k] = pr.k_normal[k];
+    pr.st.k_normal[k] = kk / cp.slave_area[k];
+    pr.st.k_tangent[k] = pr.st.k_normal[k];
     if (pr.dt0 > 0.0 && me > 0.0)
-      pr.k_tangent[k] =
-          std::min(pr.k_tangent[k], kStickScale * me / (pr.dt0 * pr.dt0) / cp.slave_area[k]);
+      pr.st.k_tangent[k] =
+          std::min(pr.st.k_tangent[k], kStickScale * me / (pr.dt0 * pr.dt0) / cp.slave_area[k]);
   }
 }
 

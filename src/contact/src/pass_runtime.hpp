@@ -12,6 +12,7 @@
 #include "plyform/contact/bucket_search.hpp"
 #include "plyform/contact/contact_set.hpp"
 #include "plyform/contact/tiebreak.hpp"
+#include "plyform/core/state_archive.hpp"
 #include "plyform/law/law.hpp"
 
 namespace plyform::contact {
@@ -55,41 +56,23 @@ double chunked_sum(std::size_t n, std::vector<double>& part, F&& f) {
   return total;
 }
 
-/// The runtime state of one pass: its law, the search, and the per-slave arrays.
-struct PassRuntime {
-  const core::ContactInterface* iface = nullptr;
-  const core::ContactPass* pass = nullptr;
-  // Wall seconds in apply(): search, projection, law, forces (InterfaceTiming).
-  double seconds[4] = {0.0, 0.0, 0.0, 0.0};
-  law::Law law;
-  law::HistoryStore history;
-  law::BatchHistory hist;
-  BucketSearch grid;
+/// What changes during a pass's run, for the pass and per slave node: the search's candidates
+/// and reach, the segment and projection of each node, its gap, slip, frame, penalty and
+/// tractions, the forces and the books, the nodal normals, the offsets, the ties. `visit`
+/// saves and restores all of it (the checkpoint, contact_state.cpp); with the law's history
+/// (PassRuntime::history) it is the pass's whole state.
+struct PassState {
+  // The search: each slave node's candidate segments (CSR), the segments' reach, the tracked
+  // nodes' positions at the last search.
   std::vector<std::size_t> cand_start;
   std::vector<core::Index> cand;
   std::vector<double> seg_radius;
-  /// Segments sharing a corner with each segment (CSR), and whether any of them rises towards
-  /// a side of it this cycle (a fold: deeper_across_valley looks across it).
-  std::vector<std::size_t> nb_start;
-  std::vector<core::Index> nb;
-  std::vector<unsigned char> folded;
-  std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
-  // Every master node is a rigid body's (a tool): its folds, once found, stay (update_folds).
-  // Not in the checkpoint: a restarted run finds them again.
-  bool rigid_master = false;
-  bool folds_fixed = false;
-  std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
-  std::vector<double> tracked_ref;         // their positions at the last search
-  double margin = 0.0;
-  double capture = 0.0;  // the cohesive band
-  bool bonds = false;    // the pass carries the cohesive law (not a plain contact, not a guard)
-  bool guard = false;    // core::ContactPass::guard
-  // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
-  std::vector<double> slave_offset, seg_offset;
-  double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
+  std::vector<double> tracked_ref;
   long cycles_since_search = 0;
   bool searched = false;
-  double dt_vote = kInf;
+  double dt_vote = std::numeric_limits<double>::infinity();
+  // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
+  std::vector<double> slave_offset, seg_offset;
   // Per slave node.
   std::vector<core::Index> seg, prev_seg;
   std::vector<double> shape, prev_shape;  // 4 each
@@ -114,10 +97,55 @@ struct PassRuntime {
   // (the central differences move the nodes with f of t_n over dt_avg, not the steps' halves).
   std::vector<double> end_power;
   double dt_last = 0.0;
-  std::vector<double> chunk_sums;  // buffer of chunked_sum
   double work = 0.0;
   std::array<double, 3> resultant{}, master_resultant{};
+  // The master's nodal normals, recomputed every cycle from the current positions (the mean
+  // of the normals of the segments around each node, each turned by its fixed sign to agree
+  // with the node's normal at t = 0). They are geometry, not the shells' nodal rotations: a
+  // rotation of a one-point shell's node is held against its element's mid-surface only by the
+  // weak rotational hourglass control, and a surface that followed it would let a contact
+  // pressure tip it further (the pressure at the offset point makes a couple that grows with
+  // the tilt), which an explicit run cannot survive under forming pressures.
+  std::vector<double> master_normal;  // 3 per master node
+  std::vector<double> seg_normal;     // 3 per segment, current
+  bool seg_normal_current = false;    // seg_normal updated for this cycle's positions
+  // The slave nodes' normals, the same way from the faces around them (none for a node set's
+  // node without faces: its offset then follows the contact normal).
+  std::vector<double> slave_normal;       // 3 per slave node
+  std::vector<double> slave_face_normal;  // 3 per slave face, current
+  std::vector<double> rs, prev_rs;        // 3 per slave: its surface point minus the node
+  std::vector<double> friction_heated;    // per slave: friction dissipation turned to heat
+  // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
+  std::vector<std::int8_t> tie_state;
+  std::vector<double> tie_gap0;
+
+  /// Saves or restores every member (contact_state.cpp).
+  void visit(core::StateArchive& a);
+};
+
+/// One pass at run time: its law and the law's history, the topology the set-up fixed, the
+/// run's state (`st`), and the scratch of a cycle.
+struct PassRuntime {
+  const core::ContactInterface* iface = nullptr;
+  const core::ContactPass* pass = nullptr;
+  // Wall seconds in apply(): search, projection, law, forces (InterfaceTiming).
+  double seconds[4] = {0.0, 0.0, 0.0, 0.0};
+  law::Law law;
+  law::HistoryStore history;
+  law::BatchHistory hist;
+  PassState st;
+
+  // Fixed by the set-up (and start(), for the normals' signs).
+  double margin = 0.0;
+  double capture = 0.0;  // the cohesive band
+  bool bonds = false;    // the pass carries the cohesive law (not a plain contact, not a guard)
+  bool guard = false;    // core::ContactPass::guard
+  double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
   double dt0 = 0.0;
+  std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
+  /// Segments sharing a corner with each segment (CSR).
+  std::vector<std::size_t> nb_start;
+  std::vector<core::Index> nb;
   // Offset surfaces of shell layers: the master surface is the mid-surface moved by its offset
   // along the nodal normals (continuous from segment to segment), a slave node's surface point
   // its position moved by its offset along its own nodal normal. Nodal normals are the mean of
@@ -127,33 +155,27 @@ struct PassRuntime {
   std::vector<core::Index> corner;          // per segment corner: index into master_nodes
   std::vector<std::size_t> node_seg_start;  // CSR master node -> segments around it
   std::vector<core::Index> node_seg;
-  // The master's nodal normals, recomputed every cycle from the current positions (the mean
-  // of the normals of the segments around each node, each turned by its fixed sign to agree
-  // with the node's normal at t = 0). They are geometry, not the shells' nodal rotations: a
-  // rotation of a one-point shell's node is held against its element's mid-surface only by the
-  // weak rotational hourglass control, and a surface that followed it would let a contact
-  // pressure tip it further (the pressure at the offset point makes a couple that grows with
-  // the tilt), which an explicit run cannot survive under forming pressures.
-  std::vector<double> master_normal;       // 3 per master node
-  std::vector<double> seg_normal;          // 3 per segment, current
-  bool seg_normal_current = false;         // seg_normal updated for this cycle's positions
-  std::vector<signed char> corner_sign;    // per segment corner: its nodal normal against it
-  std::vector<signed char> node_seg_sign;  // per node_seg entry: the same sign
-  // The slave nodes' normals, the same way from the faces around them (none for a node set's
-  // node without faces: its offset then follows the contact normal).
-  std::vector<double> slave_normal;          // 3 per slave node
-  std::vector<double> slave_face_normal;     // 3 per slave face, current
+  std::vector<signed char> corner_sign;      // per segment corner: its nodal normal against it
+  std::vector<signed char> node_seg_sign;    // per node_seg entry: the same sign
   std::vector<signed char> slave_face_sign;  // per slave_face_index entry
-  std::vector<double> rs, prev_rs;           // 3 per slave: its surface point minus the node
   bool slave_face_normals_absent = false;    // a node set's slave side: no faces, no normals
-  std::vector<double> friction_heated;       // per slave: friction dissipation turned to heat
-  // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
-  std::vector<std::int8_t> tie_state;
-  std::vector<double> tie_gap0;
+  // Every master node is a rigid body's (a tool): its folds, once found, stay (update_folds).
+  bool rigid_master = false;
   // Per model node: how many tiebreak passes hold it (ContactSet::tie_passes_at_), or null
   // when this pass does not tie.
   const std::uint8_t* ties_at = nullptr;
-  [[nodiscard]] TieArrays ties() { return {tie_state.data(), tie_gap0.data()}; }
+
+  // Scratch of a cycle (not in the checkpoint: each cycle or search rebuilds it).
+  BucketSearch grid;
+  /// Whether any neighbour of a segment rises towards a side of it this cycle (a fold:
+  /// deeper_across_valley looks across it); a rigid master's once found (a restarted run finds
+  /// them again).
+  std::vector<unsigned char> folded;
+  std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
+  bool folds_fixed = false;
+  std::vector<double> chunk_sums;  // buffer of chunked_sum
+
+  [[nodiscard]] TieArrays ties() { return {st.tie_state.data(), st.tie_gap0.data()}; }
 
   explicit PassRuntime(const law::Parameters& p) : law(p) {}
 };

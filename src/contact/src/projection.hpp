@@ -33,9 +33,9 @@ inline void project_surface(const PassRuntime& pr, std::size_t k, core::Index s,
   const auto su = static_cast<std::size_t>(s);
   const core::Index* q = &cp.segments[4 * su];
   const double* p = at(packed, cp.slave_nodes[k]);
-  const double om = pr.seg_offset[su];
-  const double os = pr.slave_offset[k];
-  const double* dir = &pr.slave_normal[3 * k];
+  const double om = pr.st.seg_offset[su];
+  const double os = pr.st.slave_offset[k];
+  const double* dir = &pr.st.slave_normal[3 * k];
   const bool along_normal = os > 0.0 && (dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0);
   if (along_normal) {
     // Towards the master: against the contact normal (side times the segment's normal).
@@ -90,7 +90,7 @@ inline Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, b
                           bool was_located, const double* packed, const double* guess) {
   const core::ContactPass& cp = *pr.pass;
   const core::Index* q = &cp.segments[4 * static_cast<std::size_t>(s)];
-  const double offsets = pr.slave_offset[k] + pr.seg_offset[static_cast<std::size_t>(s)];
+  const double offsets = pr.st.slave_offset[k] + pr.st.seg_offset[static_cast<std::size_t>(s)];
   Located L;
   if (!cp.segment_one_sided.empty() && cp.segment_one_sided[static_cast<std::size_t>(s)]) {
     // A solid's face: the node is outside, on the outward normal's side, whatever its motion.
@@ -98,18 +98,18 @@ inline Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, b
     project_surface(pr, k, s, packed, guess, nullptr, L);
     return L;
   }
-  L.side = pr.side[k];
+  L.side = pr.st.side[k];
   if (L.side != 0 && was_located) {
     // The side is relative to a segment's normal, and a surface's segments need not be
     // oriented alike (a tool mesh from several patches): on another segment than last cycle's,
     // the side is the one last cycle's contact normal is on.
-    if (s != pr.seg[k]) {
+    if (s != pr.st.seg[k]) {
       double scratch[3];
       const double* ns = current_segment_normal(pr, s, packed, scratch);
-      const double* fr = &pr.frame[9 * k];
+      const double* fr = &pr.st.frame[9 * k];
       L.side = fr[0] * ns[0] + fr[1] * ns[1] + fr[2] * ns[2] < 0.0 ? -1 : 1;
     }
-    project_surface(pr, k, s, packed, guess, &pr.frame[9 * k], L);
+    project_surface(pr, k, s, packed, guess, &pr.st.frame[9 * k], L);
     // A free node whose mid-surface is beyond the master's on the other side (its gap on this
     // side below minus twice the offsets) changes side. Between surfaces of no thickness (a
     // solid's face against a tool mesh, which is not offset) twice the offsets is 0: every
@@ -122,7 +122,7 @@ inline Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, b
     // distance between them, and the penalty would fire it through (the crush box deck's
     // coplanar flanges: 14 mm deep in one cycle, 9 kJ in the next).
     const double through = offsets > 0.0 ? 2.0 * offsets : 0.5 * pr.margin;
-    if (!((free || s != pr.seg[k]) && L.side * L.sp.distance < -through))
+    if (!((free || s != pr.st.seg[k]) && L.side * L.sp.distance < -through))
       return L;
     L.side = static_cast<signed char>(-L.side);
     project_surface(pr, k, s, packed, guess, nullptr, L);
@@ -151,10 +151,10 @@ inline Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, b
 // angle. A shell node's normal has no outward sense (both faces touch): the alignment counts
 // either way. Without faces (a node set), 0.
 inline double facing(const PassRuntime& pr, std::size_t k, const Located& L) {
-  const double* own = &pr.slave_normal[3 * k];
+  const double* own = &pr.st.slave_normal[3 * k];
   const double f =
       L.side * (own[0] * L.sp.normal[0] + own[1] * L.sp.normal[1] + own[2] * L.sp.normal[2]);
-  return pr.slave_offset[k] > 0.0 ? -std::fabs(f) : f;
+  return pr.st.slave_offset[k] > 0.0 ? -std::fabs(f) : f;
 }
 
 // A node more than half its element's depth behind a solid's face is on the body's far side,
@@ -206,7 +206,7 @@ inline bool out_of_reach(const PassRuntime& pr, core::Index s, const double* p, 
   const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
                        a[0] * b[1] - a[1] * b[0]};
   const double along = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
-  const double r = pr.seg_radius[su];
+  const double r = pr.st.seg_radius[su];
   return along * along > 1.1 * r * r * det;  // |n|^2 = det
 }
 
@@ -257,8 +257,8 @@ inline core::Index deeper_across_valley(const PassRuntime& pr, std::size_t k, co
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     if (L.sp.degenerate || L.sp.outside > tol ||
-        std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)] || behind(pr, s, L) ||
-        !(facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent))
+        std::fabs(L.sp.distance) > pr.st.seg_radius[static_cast<std::size_t>(s)] ||
+        behind(pr, s, L) || !(facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent))
       continue;
     const double gs = L.side * L.sp.distance;
     if (gs < deepest - tie) {
@@ -279,13 +279,13 @@ inline core::Index deeper_across_valley(const PassRuntime& pr, std::size_t k, co
 // does), or it falls through. Returns -1 when no candidate is within reach.
 inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool was_located,
                           const double* packed, Located& best) {
-  const core::Index cur = pr.seg[k];
+  const core::Index cur = pr.st.seg[k];
   const double tol = pr.iface->maxpar - 1.0;
   if (cur >= 0) {
     // prev_shape holds last cycle's projection on `cur` (apply() swaps the arrays).
-    const Located L = project_on(pr, k, cur, free, was_located, packed, &pr.prev_shape[4 * k]);
+    const Located L = project_on(pr, k, cur, free, was_located, packed, &pr.st.prev_shape[4 * k]);
     if (!L.sp.degenerate && L.sp.outside <= tol &&
-        std::fabs(L.sp.distance) <= pr.seg_radius[static_cast<std::size_t>(cur)] &&
+        std::fabs(L.sp.distance) <= pr.st.seg_radius[static_cast<std::size_t>(cur)] &&
         !behind(pr, cur, L) && (facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent)) {
       best = L;
       return deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
@@ -304,8 +304,8 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
   core::Index found = -1;
   const double tie = 1e-6 * pr.margin;
   const double* p = at(packed, pr.pass->slave_nodes[k]);
-  for (std::size_t c = pr.cand_start[k]; c < pr.cand_start[k + 1]; ++c) {
-    const core::Index s = pr.cand[c];
+  for (std::size_t c = pr.st.cand_start[k]; c < pr.st.cand_start[k + 1]; ++c) {
+    const core::Index s = pr.st.cand[c];
     // A candidate out of reach is passed over before the projection (a Newton solve): a
     // point that projects inside the segment (to MAXPAR) lies within its corners' distance
     // from its centroid, scaled by MAXPAR, in the plane, and within its radius along the
@@ -315,7 +315,8 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     if (L.sp.degenerate || L.sp.outside > acquire ||
-        std::fabs(L.sp.distance) > pr.seg_radius[static_cast<std::size_t>(s)] || behind(pr, s, L))
+        std::fabs(L.sp.distance) > pr.st.seg_radius[static_cast<std::size_t>(s)] ||
+        behind(pr, s, L))
       continue;
     // About the true distance to the segment: the normal distance and, outside the segment,
     // the parametric overshoot times half the segment size.

@@ -33,8 +33,8 @@ inline void segment_normal(const core::Index* q, const double* packed, double n[
 // Offset vector of corner j of segment s for a slave on `side`: along the corner's nodal
 // normal, turned to the slave's side (the normal's sign relative to the segment, fixed at t = 0).
 inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side, double r[3]) {
-  const double o = side * pr.seg_offset[s] * pr.corner_sign[4 * s + static_cast<std::size_t>(j)];
-  const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * s + j])];
+  const double o = side * pr.st.seg_offset[s] * pr.corner_sign[4 * s + static_cast<std::size_t>(j)];
+  const double* d = &pr.st.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * s + j])];
   r[0] = o * d[0], r[1] = o * d[1], r[2] = o * d[2];
 }
 
@@ -43,8 +43,8 @@ inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side,
 inline const double* current_segment_normal(const PassRuntime& pr, core::Index s,
                                             const double* packed, double* scratch) {
   const auto su = static_cast<std::size_t>(s);
-  if (pr.seg_normal_current)
-    return &pr.seg_normal[3 * su];
+  if (pr.st.seg_normal_current)
+    return &pr.st.seg_normal[3 * su];
   segment_normal(&pr.pass->segments[4 * su], packed, scratch);
   return scratch;
 }
@@ -74,7 +74,7 @@ inline void relative_velocity(const PassRuntime& pr, std::size_t k, core::Index 
   }
   const auto su = static_cast<std::size_t>(s);
   const core::Index* q = &cp.segments[4 * su];
-  const bool offset_spin = spin && pr.seg_offset[su] > 0.0;
+  const bool offset_spin = spin && pr.st.seg_offset[su] > 0.0;
   for (int j = 0; j < 4; ++j) {
     const double nj = shape[j];
     if (nj == 0.0)

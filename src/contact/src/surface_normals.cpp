@@ -45,8 +45,8 @@ void update_folds(PassRuntime& pr, const double* packed) {
   std::vector<double>& c = pr.fold_centroid;
   // The segments' normals: this cycle's from update_master_normals() where the pass keeps them
   // (the same numbers), else computed here.
-  const bool reuse = pr.seg_normal_current;
-  double* n = reuse ? pr.seg_normal.data() : pr.fold_normal.data();
+  const bool reuse = pr.st.seg_normal_current;
+  double* n = reuse ? pr.st.seg_normal.data() : pr.fold_normal.data();
   // A rigid master's folds are those of its first cycle: a rigid motion turns a segment's
   // normal and the offsets of its neighbours' centroids together. Its centroids (which
   // rises_towards reads) move with it.
@@ -89,7 +89,7 @@ void update_master_normals(PassRuntime& pr, const double* packed) {
 #pragma omp parallel for schedule(static) if (nseg > kLightLoop)
   for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
     const auto su = static_cast<std::size_t>(ls);
-    segment_normal(&cp.segments[4 * su], packed, &pr.seg_normal[3 * su]);
+    segment_normal(&cp.segments[4 * su], packed, &pr.st.seg_normal[3 * su]);
   }
   const std::size_t nm = pr.master_nodes.size();
 #pragma omp parallel for schedule(static) if (nm > kLightLoop)
@@ -97,13 +97,13 @@ void update_master_normals(PassRuntime& pr, const double* packed) {
     const auto i = static_cast<std::size_t>(li);
     double n0 = 0.0, n1 = 0.0, n2 = 0.0;
     for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
-      const double* ns = &pr.seg_normal[3 * static_cast<std::size_t>(pr.node_seg[e])];
+      const double* ns = &pr.st.seg_normal[3 * static_cast<std::size_t>(pr.node_seg[e])];
       const double sg = pr.node_seg_sign[e];
       n0 += sg * ns[0], n1 += sg * ns[1], n2 += sg * ns[2];
     }
     const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
     const double inv = len > 0.0 ? 1.0 / len : 0.0;
-    double* out = &pr.master_normal[3 * i];
+    double* out = &pr.st.master_normal[3 * i];
     out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
   }
 }
@@ -115,7 +115,7 @@ void update_slave_normals(PassRuntime& pr, const double* packed) {
 #pragma omp parallel for schedule(static) if (nf > kLightLoop)
   for (long lf = 0; lf < static_cast<long>(nf); ++lf) {
     const auto f = static_cast<std::size_t>(lf);
-    segment_normal(&cp.slave_faces[4 * f], packed, &pr.slave_face_normal[3 * f]);
+    segment_normal(&cp.slave_faces[4 * f], packed, &pr.st.slave_face_normal[3 * f]);
   }
   const std::size_t ns = cp.slave_count();
 #pragma omp parallel for schedule(static) if (ns > kLightLoop)
@@ -124,13 +124,13 @@ void update_slave_normals(PassRuntime& pr, const double* packed) {
     double n0 = 0.0, n1 = 0.0, n2 = 0.0;
     for (std::size_t e = cp.slave_face_start[k]; e < cp.slave_face_start[k + 1]; ++e) {
       const double* nf3 =
-          &pr.slave_face_normal[3 * static_cast<std::size_t>(cp.slave_face_index[e])];
+          &pr.st.slave_face_normal[3 * static_cast<std::size_t>(cp.slave_face_index[e])];
       const double sg = pr.slave_face_sign[e];
       n0 += sg * nf3[0], n1 += sg * nf3[1], n2 += sg * nf3[2];
     }
     const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
     const double inv = len > 0.0 ? 1.0 / len : 0.0;
-    double* out = &pr.slave_normal[3 * k];
+    double* out = &pr.st.slave_normal[3 * k];
     out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
   }
 }
@@ -146,18 +146,18 @@ void init_nodal_normals(PassRuntime& pr, const double* packed) {
         [&](std::size_t f) {
           return &cp.segments[4 * static_cast<std::size_t>(pr.node_seg[b + f])];
         },
-        packed, &pr.master_normal[3 * i]);
+        packed, &pr.st.master_normal[3 * i]);
   }
   // Each corner's nodal normal against its segment's normal: the sign that turns it to the side
   // of the segment a slave node is on. Fixed: nodal normals and segments turn together.
   for (std::size_t c = 0; c < pr.corner_sign.size(); ++c) {
     double ns[3];
     segment_normal(&cp.segments[c - c % 4], packed, ns);
-    const double* d = &pr.master_normal[3 * static_cast<std::size_t>(pr.corner[c])];
+    const double* d = &pr.st.master_normal[3 * static_cast<std::size_t>(pr.corner[c])];
     pr.corner_sign[c] = d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2] < 0.0 ? -1 : 1;
   }
   for (std::size_t i = 0; i < pr.master_nodes.size(); ++i) {
-    const double* d = &pr.master_normal[3 * i];
+    const double* d = &pr.st.master_normal[3 * i];
     for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
       double ns[3];
       segment_normal(&cp.segments[4 * static_cast<std::size_t>(pr.node_seg[e])], packed, ns);
@@ -173,8 +173,8 @@ void init_nodal_normals(PassRuntime& pr, const double* packed) {
         [&](std::size_t f) {
           return &cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[b + f])];
         },
-        packed, &pr.slave_normal[3 * k]);
-    const double* d = &pr.slave_normal[3 * k];
+        packed, &pr.st.slave_normal[3 * k]);
+    const double* d = &pr.st.slave_normal[3 * k];
     for (std::size_t e = b; e < cp.slave_face_start[k + 1]; ++e) {
       double nf[3];
       segment_normal(&cp.slave_faces[4 * static_cast<std::size_t>(cp.slave_face_index[e])], packed,
