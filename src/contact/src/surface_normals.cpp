@@ -81,58 +81,53 @@ void update_folds(PassRuntime& pr, const double* packed) {
   }
 }
 
-// The master's nodal normals at the current positions: the mean of the normals of the segments
-// around each node, each turned by its sign fixed at t = 0 (init_nodal_normals).
-void update_master_normals(PassRuntime& pr, const double* packed) {
-  const core::ContactPass& cp = *pr.pass;
-  const std::size_t nseg = cp.segments.size() / 4;
-#pragma omp parallel for schedule(static) if (nseg > kLightLoop)
-  for (long ls = 0; ls < static_cast<long>(nseg); ++ls) {
-    const auto su = static_cast<std::size_t>(ls);
-    segment_normal(&cp.segments[4 * su], packed, &pr.st.seg_normal[3 * su]);
+namespace {
+
+// The normals of `faces` faces (4 node indices each) at the current positions, then each
+// node's: the mean of the normals of the faces around it (CSR `start`, `index`), each turned
+// by its sign fixed at t = 0 (init_nodal_normals).
+void normals_of_faces_and_nodes(std::size_t faces, const core::Index* corners, std::size_t nodes,
+                                const std::size_t* start, const core::Index* index,
+                                const signed char* sign, const double* packed, double* face_normal,
+                                double* node_normal) {
+#pragma omp parallel for schedule(static) if (faces > kLightLoop)
+  for (long lf = 0; lf < static_cast<long>(faces); ++lf) {
+    const auto f = static_cast<std::size_t>(lf);
+    segment_normal(&corners[4 * f], packed, &face_normal[3 * f]);
   }
-  const std::size_t nm = pr.master_nodes.size();
-#pragma omp parallel for schedule(static) if (nm > kLightLoop)
-  for (long li = 0; li < static_cast<long>(nm); ++li) {
+#pragma omp parallel for schedule(static) if (nodes > kLightLoop)
+  for (long li = 0; li < static_cast<long>(nodes); ++li) {
     const auto i = static_cast<std::size_t>(li);
     double n0 = 0.0, n1 = 0.0, n2 = 0.0;
-    for (std::size_t e = pr.node_seg_start[i]; e < pr.node_seg_start[i + 1]; ++e) {
-      const double* ns = &pr.st.seg_normal[3 * static_cast<std::size_t>(pr.node_seg[e])];
-      const double sg = pr.node_seg_sign[e];
-      n0 += sg * ns[0], n1 += sg * ns[1], n2 += sg * ns[2];
+    for (std::size_t e = start[i]; e < start[i + 1]; ++e) {
+      const double* nf = &face_normal[3 * static_cast<std::size_t>(index[e])];
+      const double sg = sign[e];
+      n0 += sg * nf[0], n1 += sg * nf[1], n2 += sg * nf[2];
     }
     const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
     const double inv = len > 0.0 ? 1.0 / len : 0.0;
-    double* out = &pr.st.master_normal[3 * i];
+    double* out = &node_normal[3 * i];
     out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
   }
 }
 
-// The slave nodes' normals at the current positions, from their faces (init_nodal_normals' signs).
+}  // namespace
+
+// The master's segment and nodal normals at the current positions.
+void update_master_normals(PassRuntime& pr, const double* packed) {
+  const core::ContactPass& cp = *pr.pass;
+  normals_of_faces_and_nodes(cp.segments.size() / 4, cp.segments.data(), pr.master_nodes.size(),
+                             pr.node_seg_start.data(), pr.node_seg.data(), pr.node_seg_sign.data(),
+                             packed, pr.st.seg_normal.data(), pr.st.master_normal.data());
+}
+
+// The slave nodes' normals at the current positions, from their faces.
 void update_slave_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
-  const std::size_t nf = cp.slave_faces.size() / 4;
-#pragma omp parallel for schedule(static) if (nf > kLightLoop)
-  for (long lf = 0; lf < static_cast<long>(nf); ++lf) {
-    const auto f = static_cast<std::size_t>(lf);
-    segment_normal(&cp.slave_faces[4 * f], packed, &pr.st.slave_face_normal[3 * f]);
-  }
-  const std::size_t ns = cp.slave_count();
-#pragma omp parallel for schedule(static) if (ns > kLightLoop)
-  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
-    const auto k = static_cast<std::size_t>(lk);
-    double n0 = 0.0, n1 = 0.0, n2 = 0.0;
-    for (std::size_t e = cp.slave_face_start[k]; e < cp.slave_face_start[k + 1]; ++e) {
-      const double* nf3 =
-          &pr.st.slave_face_normal[3 * static_cast<std::size_t>(cp.slave_face_index[e])];
-      const double sg = pr.slave_face_sign[e];
-      n0 += sg * nf3[0], n1 += sg * nf3[1], n2 += sg * nf3[2];
-    }
-    const double len = std::sqrt(n0 * n0 + n1 * n1 + n2 * n2);
-    const double inv = len > 0.0 ? 1.0 / len : 0.0;
-    double* out = &pr.st.slave_normal[3 * k];
-    out[0] = n0 * inv, out[1] = n1 * inv, out[2] = n2 * inv;
-  }
+  normals_of_faces_and_nodes(cp.slave_faces.size() / 4, cp.slave_faces.data(), cp.slave_count(),
+                             cp.slave_face_start.data(), cp.slave_face_index.data(),
+                             pr.slave_face_sign.data(), packed, pr.st.slave_face_normal.data(),
+                             pr.st.slave_normal.data());
 }
 
 // The master's nodal normals at t = 0 (the mean normal of the faces around each node) and the
