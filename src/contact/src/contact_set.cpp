@@ -7,10 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <sstream>
 
-#include "contact_search.hpp"
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
 
@@ -29,7 +26,7 @@ law::Parameters guard_law(const law::Parameters& bonded) {
   p.ct = 0.0;
   p.decay_dc = 0.0;
   p.friction_limit = 0.0;
-  p.release_gap = std::numeric_limits<double>::infinity();
+  p.release_gap = kInf;
   p.vdc = 0.0;
   return p;
 }

@@ -70,7 +70,7 @@ struct PassState {
   std::vector<double> tracked_ref;
   long cycles_since_search = 0;
   bool searched = false;
-  double dt_vote = std::numeric_limits<double>::infinity();
+  double dt_vote = kInf;
   // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
   std::vector<double> slave_offset, seg_offset;
   // Per slave node.
