@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache gfortran clang-format
   libgtest-dev libgmock-dev libbenchmark-dev libfmt-dev libcli11-dev libeigen3-dev libmetis-dev
+  libopenmpi-dev openmpi-bin
   python3 python3-matplotlib python3-numpy python3-scipy python3-vtk9
 )
 

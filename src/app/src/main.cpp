@@ -5,8 +5,11 @@
 #include <iostream>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/comm/communicator.hpp"
 
 int main(int argc, char** argv) {
+  // Under mpirun: MPI for the whole command (docs/parallel.md); otherwise nothing.
+  const plyform::comm::Session mpi(&argc, &argv);
   CLI::App app{"plyform: explicit finite elements for the thermoforming of multi-layer sheets"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "plyform 0.1.0");
@@ -138,6 +141,10 @@ int main(int argc, char** argv) {
   fit_cmd->add_flag("--no-plot", fit_no_plot, "do not draw <stem>_curves.png");
 
   CLI11_PARSE(app, argc, argv);
+  // Only `run` works over several ranks; the other commands are the first rank's alone.
+  const plyform::comm::Communicator& world = plyform::comm::Communicator::world();
+  if (!run_cmd->parsed() && world.rank() != 0)
+    return 0;
 
   if (run_cmd->parsed()) {
     if (*run_out)

@@ -10,6 +10,8 @@
 #include <ostream>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/comm/communicator.hpp"
+#include "plyform/domain/decomposition.hpp"
 #include "plyform/engine/checkpoint_file.hpp"
 #include "plyform/engine/solver.hpp"
 #include "plyform/keyword/read_deck.hpp"
@@ -52,6 +54,21 @@ class StopOnSignals {
   void (*term_)(int) = SIG_DFL;
 };
 
+// The sink of the ranks after the first over MPI: every rank holds the whole state, and the first
+// writes the files (rank_exchange.hpp).
+class NoOutputs final : public engine::OutputSink {
+ public:
+  void state(const engine::Snapshot& /*s*/) override {}
+  void glstat(const engine::Energies& /*e*/) override {}
+  void nodout(const engine::Snapshot& /*s*/) override {}
+};
+
+// Where the ranks after the first write what the first writes too: nowhere.
+class NullBuffer final : public std::streambuf {
+ protected:
+  int overflow(int c) override { return c; }
+};
+
 constexpr const char* untrusted_status = "completed, results not to be trusted";
 
 bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
@@ -62,7 +79,14 @@ bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
 
 }  // namespace
 
-int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
+int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& terminal_err) {
+  // Over MPI (mpirun -np N) every rank reads, checks and builds the same model and runs it
+  // (docs/parallel.md); the first speaks for all of them.
+  const comm::Communicator& world = comm::Communicator::world();
+  NullBuffer nowhere;
+  std::ostream quiet(&nowhere);
+  std::ostream& out = world.rank() == 0 ? terminal_out : quiet;
+  std::ostream& err = world.rank() == 0 ? terminal_err : quiet;
   const keyword::ReadResult read = keyword::read_deck(given.deck);
   const RunOptions options = with_deck_threads(given, read.model);  // --threads, else NCPU
   for (const auto& w : read.warnings)
@@ -103,6 +127,17 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
       return 1;
     }
   }
+  engine::SolverOptions so;
+  so.ranks = &world;
+  if (world.size() > 1) {
+    const domain::DecomposeResult split = domain::decompose(model, world.size());
+    if (!split.error.empty()) {
+      fmt::print(err, "error: cannot run {} over {} ranks: {}\n", options.deck.string(),
+                 world.size(), split.error);
+      return 1;
+    }
+    so.node_owner = split.decomposition.node_owner;
+  }
   output::RunSummary summary;
   summary.deck = options.deck.string();
   summary.version = "0.1.0";
@@ -111,12 +146,17 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
   summary.elements = static_cast<long>(model.solid_count() + model.shell_count());
   summary.deformable_elements = static_cast<long>(model.deformable_element_count());
   summary.threads = options.threads;
+  summary.ranks = world.size();
   engine::RunResult result;
   try {
     std::filesystem::create_directories(outdir);
-    ResultWriter writer(model, outdir, std::cout, options.progress && output::stdout_is_terminal(),
-                        resume ? &*resume : nullptr);
-    engine::SolverOptions so;
+    std::optional<ResultWriter> files;
+    NoOutputs no_outputs;
+    if (world.rank() == 0) {
+      files.emplace(model, outdir, std::cout, options.progress && output::stdout_is_terminal(),
+                    resume ? &*resume : nullptr);
+    }
+    engine::OutputSink& writer = files ? static_cast<engine::OutputSink&>(*files) : no_outputs;
     so.threads = options.threads;
     so.end_time = options.end_time;
     so.checkpoint = checkpoint;
@@ -130,11 +170,17 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
       resume.reset();  // the records are in the state now
     }
     result = simulation.run();
-    writer.finish();
+    if (files)
+      files->finish();
   } catch (const core::StateError& e) {
     fmt::print(err, "error: cannot restart: {}\n", e.what());
     return 1;
   } catch (const std::exception& e) {
+    if (world.size() > 1) {
+      // One rank alone cannot go on while the others wait in the next exchange: it stops them.
+      fmt::print(terminal_err, "error (rank {} of {}): {}\n", world.rank(), world.size(), e.what());
+      world.abort(2);
+    }
     fmt::print(err, "error: {}\n", e.what());
     summary.status = std::string("error: ") + e.what();
     output::write_summary_json(outdir / "summary.json", summary);
@@ -167,16 +213,18 @@ int run_deck(const RunOptions& given, std::ostream& out, std::ostream& err) {
   summary.loop_seconds = result.timing.loop_seconds;
   for (const engine::PassTime& p : result.timing.passes)
     summary.timing.push_back({p.group, p.name, p.seconds});
-  output::write_summary_json(outdir / "summary.json", summary);
+  if (world.rank() == 0)
+    output::write_summary_json(outdir / "summary.json", summary);
 
   for (const auto& w : result.warnings)
     fmt::print(err, "warning: {}\n", w);
   fmt::print(out,
              "{}: {} cycles to t = {:.6g} in {:.3g} s wall ({:.3g} M element-cycles/s, "
-             "{} thread{})\n",
+             "{} thread{}{})\n",
              summary.status, result.cycles, result.time, result.wall_seconds,
              result.element_cycles_per_second * 1e-6, options.threads,
-             options.threads == 1 ? "" : "s");
+             options.threads == 1 ? "" : "s",
+             world.size() > 1 ? fmt::format(" on each of {} ranks", world.size()) : "");
   fmt::print(out,
              "energies at the end: kinetic {:.6g}, internal {:.6g}, hourglass {:.6g}, external "
              "work {:.6g}, ratio {:.6f}\n",

@@ -189,7 +189,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       // stretches and thins).
       const double mid_volume =
           t * (1.0 + 0.5 * tz) * a * (1.0 - 0.5 * dt * (RATE[0][k_el] + RATE[1][k_el]));
-      r.internal_energy += 0.5 * (work_old[k_el] + cs.work[0]) * 0.5 * mid_volume;
+      // The element's books, summed into the range's in element order (ElementBooks).
+      double internal = 0.5 * (work_old[k_el] + cs.work[0]) * 0.5 * mid_volume;
+      double hg = 0.0, hg_start = 0.0, hg_end = 0.0;
       const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
       double p_start = work_old[k_el] * 0.5 * mid_volume * inv_dt;
       double p_end = cs.work[0] * 0.5 * mid_volume * inv_dt;
@@ -200,15 +202,13 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         double& q_old = st.bulk_q[e];
         const double rate = -(RATE[0][k_el] + RATE[1][k_el]);
         const double w0 = q_old * rate * t * a, w1 = bulk_q[k_el] * rate * t * a;
-        r.internal_energy += 0.5 * (w0 + w1) * dt;
+        internal += 0.5 * (w0 + w1) * dt;
         p_start += w0;
         p_end += w1;
         q_old = bulk_q[k_el];
         nxx -= bulk_q[k_el] * t;
         nyy -= bulk_q[k_el] * t;
       }
-      r.start_power += p_start;
-      r.end_power += p_end;
       st.thickness[e] = t * (1.0 + tz);
       if (plastic_heat)
         spread_plastic_work(conn, cs.plastic[0] * 0.5 * t * a, out);
@@ -264,9 +264,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
             qj = q_new;
             coef[j] = q_new;
           }
-          r.hourglass_energy += 0.5 * (p0 + p1) * dt;
-          r.hourglass_start_power += p0;
-          r.hourglass_end_power += p1;
+          hg = 0.5 * (p0 + p1) * dt;
+          hg_start = p0;
+          hg_end = p1;
           for (int i = 0; i < 4; ++i) {
             fl[i][0] += coef[0] * gam[i];
             fl[i][1] += coef[1] * gam[i];
@@ -287,9 +287,9 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
             qj = coef[j] * qv[j];
             p1 += qj * qv[j];
           }
-          r.hourglass_energy += 0.5 * (p0 + p1) * dt;
-          r.hourglass_start_power += p0;
-          r.hourglass_end_power += p1;
+          hg = 0.5 * (p0 + p1) * dt;
+          hg_start = p0;
+          hg_end = p1;
           for (int i = 0; i < 4; ++i) {
             fl[i][0] += coef[0] * qv[0] * gam[i];
             fl[i][1] += coef[1] * qv[1] * gam[i];
@@ -300,6 +300,14 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
         }
       }
       scatter(conn, f, k_el, fl, ml, out, mom);
+      r.internal_energy += internal;
+      r.start_power += p_start;
+      r.end_power += p_end;
+      r.hourglass_energy += hg;
+      r.hourglass_start_power += hg_start;
+      r.hourglass_end_power += hg_end;
+      if (out.books != nullptr)
+        out.books[e] = {internal, hg, p_start, p_end, hg_start, hg_end};
     }
   }
   return r;

@@ -225,6 +225,8 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       double fl[4][3] = {}, ml[4][2] = {};
       double wp = 0.0;
       const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+      // The element's books, summed into the range's in element order (ElementBooks).
+      double internal = 0.0, p_start = 0.0, p_end = 0.0;
       for (std::size_t gp = 0; gp < 4; ++gp) {
         double nxx = cs.nxx[gp], nyy = cs.nyy[gp];
         const double nxy = cs.nxy[gp], mxx = cs.mxx[gp], myy = cs.myy[gp], mxy = cs.mxy[gp];
@@ -233,17 +235,17 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
         wp += cs.plastic[gp] * 0.5 * t * da;
         // Midpoint rule on the point's mid-step volume, as the BT kernel books its one point.
         const double mid_volume = t * (1.0 + 0.5 * tz) * da * (1.0 - 0.5 * dt * DIL[gp][k_el]);
-        r.internal_energy += 0.5 * (work_old[k_el][gp] + cs.work[gp]) * 0.5 * mid_volume;
-        r.start_power += work_old[k_el][gp] * 0.5 * mid_volume * inv_dt;
-        r.end_power += cs.work[gp] * 0.5 * mid_volume * inv_dt;
+        internal += 0.5 * (work_old[k_el][gp] + cs.work[gp]) * 0.5 * mid_volume;
+        p_start += work_old[k_el][gp] * 0.5 * mid_volume * inv_dt;
+        p_end += cs.work[gp] * 0.5 * mid_volume * inv_dt;
         if (bulk_on) {
           // The midpoint rule of the BT kernel's bulk viscosity, at each point.
           double& q_old = st.bulk_q[4 * e + gp];
           const double rate = -DIL[gp][k_el];
           const double w0 = q_old * rate * t * da, w1 = bulk_q[k_el][gp] * rate * t * da;
-          r.internal_energy += 0.5 * (w0 + w1) * dt;
-          r.start_power += w0;
-          r.end_power += w1;
+          internal += 0.5 * (w0 + w1) * dt;
+          p_start += w0;
+          p_end += w1;
           q_old = bulk_q[k_el][gp];
           nxx -= bulk_q[k_el][gp] * t;
           nyy -= bulk_q[k_el][gp] * t;
@@ -281,6 +283,11 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       if (plastic_heat)
         spread_plastic_work(conn, wp, out);
       scatter(conn, f, k_el, fl, ml, out, mom);
+      r.internal_energy += internal;
+      r.start_power += p_start;
+      r.end_power += p_end;
+      if (out.books != nullptr)
+        out.books[e] = {internal, 0.0, p_start, p_end, 0.0, 0.0};
     }
   }
   return r;

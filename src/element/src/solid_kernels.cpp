@@ -228,10 +228,17 @@ struct BulkQ {
 // rate, the bulk viscosity's work ran a step ahead of its forces where the rate jumps: a wall
 // striking a bar at rest read 1.07 at the first cycles, and a block's face heated by 200 K at
 // once 1.03 at the end (tests/verification/engine/test_viscosity_books.cpp).
-inline void step_powers(SolidResult& r, double start, double end, double dt) {
-  r.internal_energy += 0.5 * (start + end) * dt;
+inline void step_powers(SolidResult& r, double start, double end, double dt, ElementBooks* books,
+                        std::size_t e) {
+  const double internal = 0.5 * (start + end) * dt;
+  r.internal_energy += internal;
   r.start_power += start;
   r.end_power += end;
+  if (books != nullptr) {
+    books[e].internal = internal;
+    books[e].start_power = start;
+    books[e].end_power = end;
+  }
 }
 
 inline double bulk_length(double volume, double step_length) {
@@ -524,7 +531,7 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
       double& q_old = st.bulk_q[c0 + k];
       const double trace = s.d[0][k] + s.d[1][k] + s.d[2][k], scale = vol[k] * s.jm[k];
       step_powers(r, (power_start[k] - q_old * trace) * scale,
-                  (power_end[k] - bulk_q[k] * trace) * scale, dt);
+                  (power_end[k] - bulk_q[k] * trace) * scale, dt, out.books, c0 + k);
       q_old = bulk_q[k];
     }
     if (plastic_heat) {
@@ -573,9 +580,15 @@ SolidResult one_point(const core::SolidBlock& block, const M& mat, SolidBlockSta
         if (plastic_heat)
           out.plastic_work[node] += heat[k];
       }
-      r.hourglass_energy += 0.5 * (hg_start[k] + hg_end[k]) * dt;
+      const double hg = 0.5 * (hg_start[k] + hg_end[k]) * dt;
+      r.hourglass_energy += hg;
       r.hourglass_start_power += hg_start[k];
       r.hourglass_end_power += hg_end[k];
+      if (out.books != nullptr) {
+        out.books[c0 + k].hourglass = hg;
+        out.books[c0 + k].hourglass_start_power = hg_start[k];
+        out.books[c0 + k].hourglass_end_power = hg_end[k];
+      }
     }
   }
   return r;
@@ -704,7 +717,7 @@ SolidResult selective_reduced(const core::SolidBlock& block, const M& mat, Solid
         p_start += power_start[p] * scale;
         p_end += power_end[p] * scale;
       }
-      step_powers(r, p_start, p_end, dt);
+      step_powers(r, p_start, p_end, dt, out.books, c0 + k);
       q_old = bulk_q[k];
     }
 

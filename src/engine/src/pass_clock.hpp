@@ -17,6 +17,7 @@ enum class Pass : std::size_t {
   positions,    // the nodes' displacements and the packed positions of the step
   loads,        // nodal loads and prescribed temperatures
   elements,     // the element loop (all blocks; split by block below)
+  exchange,     // over several MPI ranks: the nodes' and elements' values after the element loop
   thermal,      // the thermal step when due, and the check of the tables' ranges
   contact,      // every interface (split by interface and stage by the contact set)
   step_vote,    // the next step

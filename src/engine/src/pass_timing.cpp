@@ -68,6 +68,9 @@ PassTiming timing_table(const core::Model& model, const PassClock& clock,
       add("elements", label, element_wall * s / thread_seconds);
   }
 
+  if (clock.at(Pass::exchange) > 0.0)
+    add("ranks", "exchange after the element loop", clock.at(Pass::exchange));
+
   const double thermal = clock.at(Pass::thermal);
   if (thermal > 0.0) {
     add("thermal", "contact links and heat sources", clock.heat_sources);

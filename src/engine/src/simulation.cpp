@@ -28,57 +28,12 @@
 #include "plyform/engine/solver.hpp"
 #include "plyform/engine/thread_governor.hpp"
 #include "plyform/material/law_registry.hpp"
+#include "rank_exchange.hpp"
 #include "tied_nodes.hpp"
+#include "work_items.hpp"
 
 namespace plyform::engine {
 namespace {
-
-// A range of elements of one colour of one block: the unit of parallel work in the element
-// loop. Items of one phase (block, colour) share no node and run in parallel; phases run in
-// order, so each node sums its forces in the same order for any number of threads.
-struct WorkItem {
-  bool shell;  ///< a shell block (else a solid block)
-  std::size_t block, begin, end;
-};
-
-template <class Block>
-void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,
-                std::vector<std::vector<WorkItem>>& phases) {
-  // Items of up to 64 elements, but at least 8 per colour where the colour allows (in steps
-  // of 16, the kernels' lane width): the colours of a small part (a few hundred shells: four
-  // colours of some 80) would otherwise make one or two items each, and one thread would run
-  // the whole element loop while the others wait. The item size depends on the colour's size
-  // only, never on the thread count, so the books sum in the same order on any thread count.
-  static constexpr std::size_t kLanes = 16, kMaxItem = 64, kItemsWanted = 8;
-  const auto item_size = [](std::size_t colour_size) {
-    const std::size_t even = (colour_size + kItemsWanted - 1) / kItemsWanted;
-    return std::clamp((even + kLanes - 1) / kLanes * kLanes, kLanes, kMaxItem);
-  };
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    // Rigid parts move with their body: no internal forces, no stable step.
-    if (std::holds_alternative<core::RigidMaterial>(
-            model.materials[static_cast<std::size_t>(blocks[b].material)])) {
-      continue;
-    }
-    const std::vector<std::size_t>& start = blocks[b].colour_start;
-    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
-      std::vector<WorkItem> phase;
-      const std::size_t item = item_size(start[c + 1] - start[c]);
-      for (std::size_t e = start[c]; e < start[c + 1]; e += item) {
-        phase.push_back({shell, b, e, std::min(start[c + 1], e + item)});
-      }
-      if (!phase.empty())
-        phases.push_back(std::move(phase));
-    }
-  }
-}
-
-std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) {
-  std::vector<std::vector<WorkItem>> phases;
-  add_phases(model, model.solid_blocks, false, phases);
-  add_phases(model, model.shell_blocks, true, phases);
-  return phases;
-}
 
 struct InternalResult {
   double dt_min = 1e300;
@@ -276,6 +231,12 @@ struct Simulation::State {
 
   // ---- Scratch of one pass -------------------------------------------------------------------
   std::vector<ItemResult> item_results;
+  // Over several ranks (rank_exchange.hpp; empty on one): the split of the element loop, and per
+  // phase the results of this rank's pieces.
+  std::optional<RankExchange> ranks;
+  std::vector<std::vector<ItemResult>> piece_results;
+  std::vector<std::vector<RangeBooks>> piece_books;
+  long element_state_cycle = -1;  // the cycle whose element states were last gathered
   InternalResult elements_result;
   double bad_velocities = 0.0;
   std::vector<std::array<double, 3>> free_velocity;
@@ -320,6 +281,8 @@ struct Simulation::State {
   // Their parts and helpers.
   void pack();
   void internal(double dt_step);
+  void internal_on_ranks(double dt_step);
+  void gather_element_state();
   double advance_velocity(double t_now, double dt_prev, double dt_next, double dt_avg);
   /// The times of one velocity pass: t_n, the step before and after it, their mean.
   struct StepTimes {
@@ -602,6 +565,14 @@ void Simulation::State::set_up_run() {
   verdict.start(std::abs(kinetic0) + stored0, heat_works);
   next_books_cycle = books_every;
   eps_t = 1e-9 * std::max(end_time, dt);
+  // Over several ranks the element loop is shared out from the first cycle on; the set-up
+  // above ran whole on every rank.
+  if (options.ranks != nullptr && options.ranks->size() > 1) {
+    PLYFORM_INVARIANT(options.node_owner.size() == n, "one owner per node");
+    ranks.emplace(model, phases, options.node_owner, *options.ranks);
+    piece_results.resize(phases.size());
+    piece_books.resize(phases.size());
+  }
   set_up = true;
 }
 
@@ -703,6 +674,10 @@ void Simulation::State::pack() {
 // Element forces at the current positions into `elements_result`; the nodal force arrays must be
 // zero and the packed copy current (the positions and velocity passes see to both).
 void Simulation::State::internal(double dt_step) {
+  if (ranks) {
+    internal_on_ranks(dt_step);
+    return;
+  }
   const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data(),
                                     plastic_work.empty() ? nullptr : plastic_work.data()};
   const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
@@ -772,6 +747,133 @@ void Simulation::State::internal(double dt_step) {
   elements_result = r;
 }
 
+// The element loop of one of several ranks (rank_exchange.hpp): this rank's pieces of the items,
+// each element's books into the exchange's arrays; then the owners' nodal values and the
+// elements' books to every rank, and the items' books summed from their elements' in order, as
+// the kernels sum them on one rank.
+void Simulation::State::internal_on_ranks(double dt_step) {
+  const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
+  const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
+  const auto& pieces = ranks->pieces();
+  for (std::size_t p = 0; p < phases.size(); ++p)
+    piece_results[p].resize(pieces[p].size());
+#pragma omp parallel proc_bind(close)
+  {
+    for (std::size_t p = 0; p < phases.size(); ++p) {
+      const std::vector<ItemPiece>& phase = pieces[p];
+#pragma omp for schedule(static)
+      for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
+        const ItemPiece& piece = phase[static_cast<std::size_t>(w)];
+        const WorkItem& it = piece.range;
+        const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data(),
+                                          plastic_work.empty() ? nullptr : plastic_work.data(),
+                                          ranks->books(it.shell, it.block)};
+        ItemResult& out = piece_results[p][static_cast<std::size_t>(w)];
+        core::Stopwatch item_clock;
+        if (it.shell) {
+          const core::ShellBlock& blk = model.shell_blocks[it.block];
+          out = item_result(element::shell_forces(
+              blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view,
+              spin, dt_step, it.begin, it.end, forces, moments));
+        } else {
+          const core::SolidBlock& blk = model.solid_blocks[it.block];
+          out = item_result(
+              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                                    solids[it.block], view, dt_step, it.begin, it.end, forces));
+        }
+        item_seconds[phase_offset[p] + piece.item] += item_clock.lap();
+      }
+    }
+  }
+  // This rank's smallest step and first failure, in the loop's order.
+  RankElementReport mine;
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    for (std::size_t w = 0; w < pieces[p].size(); ++w) {
+      const ItemResult& x = piece_results[p][w];
+      const std::size_t item = pieces[p][w].item;
+      if (x.failed && !mine.failed) {
+        mine.failed = true;
+        mine.unsupported_material = x.unsupported_material;
+        mine.failed_phase = p;
+        mine.failed_item = item;
+        mine.failed_element = x.failed_element;
+      }
+      if (x.dt_min < mine.dt_min) {
+        mine.dt_min = x.dt_min;
+        mine.dt_phase = p;
+        mine.dt_item = item;
+        mine.dt_element = x.dt_element;
+      }
+    }
+  }
+  // The exchange is its own pass in the timing table: its seconds leave the element loop's.
+  core::Stopwatch exchange_clock;
+  std::vector<double*> fields = {s.fx.data(), s.fy.data(), s.fz.data()};
+  if (rotations)
+    fields.insert(fields.end(), {s.mx.data(), s.my.data(), s.mz.data()});
+  if (!plastic_work.empty())
+    fields.push_back(plastic_work.data());
+  ranks->gather_nodes(fields);
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    piece_books[p].resize(pieces[p].size());
+    for (std::size_t w = 0; w < pieces[p].size(); ++w) {
+      const ItemResult& x = piece_results[p][w];
+      piece_books[p][w] = {x.internal_energy, x.hourglass_energy, x.power[0],
+                           x.power[1],        x.power[2],         x.power[3]};
+    }
+  }
+  // The shells' thickness is read every cycle by the contact's offsets and the thermal step.
+  ranks->gather_elements(piece_books, shells, contact.has_value() || heat.has_value());
+  const RankElementReport chosen = ranks->choose(mine);
+  const double exchanged = exchange_clock.lap();
+  clock.add(Pass::exchange, exchanged);
+  clock.add(Pass::elements, -exchanged);
+  InternalResult r;
+  r.dt_min = chosen.dt_min;
+  if (chosen.dt_min < 1e300) {
+    r.dt_item = phases[chosen.dt_phase][chosen.dt_item];
+    r.dt_element = chosen.dt_element;
+  }
+  if (chosen.failed) {
+    r.failed = true;
+    r.unsupported_material = chosen.unsupported_material;
+    r.failed_item = phases[chosen.failed_phase][chosen.failed_item];
+    r.failed_element = chosen.failed_element;
+  }
+  for (auto& power : shell_power)
+    power = {};
+  for (auto& power : solid_power)
+    power = {};
+  for (std::size_t p = 0; p < phases.size(); ++p) {  // in order: as on one rank
+    for (std::size_t w = 0; w < phases[p].size(); ++w) {
+      const WorkItem& it = phases[p][w];
+      const RangeBooks& b = ranks->item_books()[p][w];
+      ItemResult x;
+      x.internal_energy = b.internal;
+      x.hourglass_energy = b.hourglass;
+      x.power = {b.start_power, b.end_power, b.hourglass_start_power, b.hourglass_end_power};
+      r.hourglass += x.hourglass_energy;
+      r.internal += x.internal_energy;
+      std::array<double, 2>& books_of = it.shell ? shell_books[it.block] : solid_books[it.block];
+      books_of[0] += x.internal_energy;
+      books_of[1] += x.hourglass_energy;
+      std::array<double, 4>& power = it.shell ? shell_power[it.block] : solid_power[it.block];
+      for (std::size_t k = 0; k < 4; ++k)
+        power[k] += x.power[k];
+    }
+  }
+  elements_result = r;
+}
+
+// Over several ranks, every element's state from the rank that reported it, before anything reads
+// the elements' state (the states, elout, the end's files, a checkpoint); once a cycle.
+void Simulation::State::gather_element_state() {
+  if (!ranks || element_state_cycle == cycle)
+    return;
+  ranks->gather_element_state(shells, solids);
+  element_state_cycle = cycle;
+}
+
 std::string Simulation::State::element_name(const WorkItem& it, std::size_t e) const {
   const auto name = [&](const auto& blk, const char* kind) {
     return std::string(kind) + " element " + std::to_string(blk.element_id[e]) + " (part " +
@@ -806,8 +908,10 @@ void Simulation::State::fail(const std::string& why) {
   res.error = why;
   // Keep the last state for the diagnosis, unless this cycle's outputs wrote it already (the
   // books' check follows them): a second state at one time would break the series.
-  if (!clocks.written_now(Output::state, t))
+  if (!clocks.written_now(Output::state, t)) {
+    gather_element_state();
     sink.state(snapshot());
+  }
 }
 
 // The node arrays that only outputs read are brought up to date on demand: positions
@@ -1280,6 +1384,8 @@ void Simulation::State::write_outputs(bool last) {
   const bool want_elout = due(Output::elout, out.elout_dt);
   if (want_state || want_nodout || want_elout)
     sync();
+  if (want_state || want_elout)
+    gather_element_state();
   if (want_state) {
     sink.state(snapshot());
     wrote(Output::state, out.d3plot_dt);
@@ -1751,6 +1857,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
 
 // The engine's state under "engine/", the output sink's under "outputs/".
 core::StateArchive::Records Simulation::State::checkpoint_records() {
+  gather_element_state();
   auto archive = core::StateArchive::for_saving();
   {
     const auto scope = archive.scope("engine");
@@ -1768,7 +1875,9 @@ void Simulation::State::write_checkpoint() {
 }
 
 void Simulation::State::write_checkpoint(const core::StateArchive::Records& records) {
-  engine::write_checkpoint(options.checkpoint, options.fingerprint, records);
+  // Every rank holds the whole state (rank_exchange.hpp): the first writes it.
+  if (options.ranks == nullptr || options.ranks->rank() == 0)
+    engine::write_checkpoint(options.checkpoint, options.fingerprint, records);
   ++res.checkpoints;
   res.checkpoint = options.checkpoint.string();
 }
@@ -1844,7 +1953,9 @@ RunResult Simulation::run() {
     st.sink.progress(st.t, st.end_time, st.cycle, st.dt, st.wall_before + st.wall());
     st.governor.tick();
     st.clock.add(Pass::outputs, watch.lap());
-    const bool stop = st.options.stop != nullptr && *st.options.stop != 0;
+    bool stop = st.options.stop != nullptr && *st.options.stop != 0;
+    if (st.ranks)  // a signal reaches the ranks at different cycles: all stop at the same one
+      stop = st.options.ranks->max(stop ? 1L : 0L) != 0;
     if (checkpoints && (stop || (st.options.checkpoint_cycles > 0 &&
                                  st.cycle % st.options.checkpoint_cycles == 0))) {
       st.write_checkpoint();
@@ -1865,6 +1976,7 @@ RunResult Simulation::run() {
       st.sink.glstat(st.energies());
     // The end state for the files written once (dynain), on the end's positions.
     st.sync();
+    st.gather_element_state();
     st.sink.end_of_run(st.snapshot());
     // The end's checkpoint lets a restart go on past the end time (--end-time): the state
     // before the last step where one was kept (keep_end_records).

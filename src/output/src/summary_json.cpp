@@ -149,6 +149,7 @@ std::string summary_json_text(const RunSummary& s) {
   integer("elements", s.elements);
   integer("deformable_elements", s.deformable_elements);
   integer("threads", s.threads);
+  integer("ranks", s.ranks);
   real("restarted_at", s.restarted_at);
   text("checkpoint", s.checkpoint);
   integer("thermal_steps", s.thermal_steps);

@@ -256,6 +256,7 @@ RunSummary example_summary() {
   s.elements = 800;
   s.deformable_elements = 700;
   s.threads = 2;
+  s.ranks = 3;
   s.warnings = {"line one\nline \"two\"", "tab\there, back\\slash, bell\x07"};
   s.loop_seconds = 12.0;
   s.timing = {{"elements", "shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC", 9.0},
@@ -282,6 +283,7 @@ TEST(SummaryJson, ExpectedText) {
   "elements": 800,
   "deformable_elements": 700,
   "threads": 2,
+  "ranks": 3,
   "restarted_at": null,
   "checkpoint": "",
   "thermal_steps": 0,

@@ -287,9 +287,9 @@ struct Model {
   [[nodiscard]] std::size_t deformable_element_count() const;
 };
 
-/// Reorders the elements of every solid and shell block by colour (greedy, in element order)
-/// and fills colour_start. Returns false when a node is shared by more elements than the
-/// colouring supports (128 colours).
+/// Reorders the elements of every solid and shell block by colour (greedy, in element order;
+/// within a colour along a Morton curve through the block) and fills colour_start. Returns false
+/// when a node is shared by more elements than the colouring supports (128 colours).
 bool colour_element_blocks(Model& model);
 
 /// Whether every block's colouring holds: its colour ranges cover the block in order, its node

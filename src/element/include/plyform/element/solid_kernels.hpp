@@ -33,12 +33,24 @@ struct NodalView {
   const double* temperature_top = nullptr;
 };
 
+/// One element's share of its kernel call's books (SolidResult's and ShellResult's energies and
+/// powers of the step). A kernel's result sums them over its elements in order, so the books of
+/// a range can be summed again from its elements' shares, whoever computed them (the ranks of a
+/// run over MPI, docs/parallel.md).
+struct ElementBooks {
+  double internal = 0.0, hourglass = 0.0;
+  double start_power = 0.0, end_power = 0.0;
+  double hourglass_start_power = 0.0, hourglass_end_power = 0.0;
+};
+
 /// Nodal internal force accumulators (length node_count), added to by the kernels.
 struct NodalForces {
   double *fx, *fy, *fz;
   /// Optional: each element's plastic dissipation of the step (sigma_eq d eps_p over its
   /// points, energy) added to its nodes in equal shares, for the heat of plastic work.
   double* plastic_work = nullptr;
+  /// Optional: each element's books (indexed by the element's place in its block).
+  ElementBooks* books = nullptr;
 };
 
 /// State of one solid block: stresses per integration point (xx, yy, zz, xy, yz, zx) and

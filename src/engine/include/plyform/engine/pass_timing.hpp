@@ -9,7 +9,7 @@
 
 namespace plyform::engine {
 
-/// One line of the table: the group ("elements", "contact", "thermal", "nodes", "outputs",
+/// One line of the table: the group ("elements", "ranks", "contact", "thermal", "nodes", "outputs",
 /// "other") and the pass within it, with its wall seconds over this process's time loop.
 struct PassTime {
   std::string group;

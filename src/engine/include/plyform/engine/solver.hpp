@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "plyform/comm/communicator.hpp"
 #include "plyform/contact/contact_set.hpp"
 #include "plyform/core/model.hpp"
 #include "plyform/core/state_archive.hpp"
@@ -133,6 +134,11 @@ struct SolverOptions {
   /// Set (non-zero) by a signal handler: the run finishes its cycle and the outputs due, writes
   /// a checkpoint and stops (RunResult::stopped).
   const volatile std::sig_atomic_t* stop = nullptr;
+  /// A run over several MPI ranks (docs/parallel.md): the ranks, and per node the rank that owns
+  /// it (domain::Decomposition::node_owner; -1 where no deformable element touches it). Without
+  /// them, or on one rank, the run is this process's alone.
+  const comm::Communicator* ranks = nullptr;
+  std::vector<int> node_owner;
 };
 
 struct RunResult {

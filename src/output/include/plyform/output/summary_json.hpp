@@ -30,6 +30,7 @@ struct RunSummary {
   long elements = 0;             ///< solids and shells, rigid parts' included
   long deformable_elements = 0;  ///< what element_cycles_per_second counts
   int threads = 1;
+  int ranks = 1;  ///< MPI ranks (docs/parallel.md)
   /// A restart: the time it continued from (NaN, written null: the run started at t = 0). The
   /// other fields cover the whole run, its parts before the restart included.
   double restarted_at = std::numeric_limits<double>::quiet_NaN();

@@ -1,0 +1,53 @@
+#pragma once
+// The ranks of one run (docs/parallel.md). `mpirun -np N plyform run` starts N processes; each
+// holds this process's place among them and calls the collectives below in the same order as
+// every other rank. A build without MPI, or a process started without mpirun, is one rank and
+// every call is a copy or nothing.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace plyform::comm {
+
+/// MPI for the lifetime of the process's command (MPI_Init_thread ... MPI_Finalize). Made once in
+/// main(); a build without MPI makes nothing.
+class Session {
+ public:
+  Session(int* argc, char*** argv);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+/// True when this build can run over several ranks.
+[[nodiscard]] bool mpi_available();
+
+class Communicator {
+ public:
+  /// Every process of the run (MPI_COMM_WORLD; one rank without MPI).
+  [[nodiscard]] static const Communicator& world();
+
+  [[nodiscard]] int rank() const { return rank_; }
+  [[nodiscard]] int size() const { return size_; }
+
+  /// Every rank's `mine` laid end to end, rank by rank, into `all` on every rank; counts[r] values
+  /// from rank r at offset displs[r] (the same counts on every rank).
+  void all_gather(std::span<const double> mine, std::span<double> all,
+                  const std::vector<int>& counts, const std::vector<int>& displs) const;
+  /// The same, one value of `mine` per rank (counts all 1).
+  [[nodiscard]] std::vector<double> all_gather(double mine) const;
+  /// The largest of every rank's value.
+  [[nodiscard]] long max(long mine) const;
+  /// Stops every rank of the run with `code` (a rank that cannot go on while the others wait).
+  [[noreturn]] void abort(int code) const;
+
+ private:
+  Communicator() = default;
+  static Communicator& instance();
+  int rank_ = 0;
+  int size_ = 1;
+  friend class Session;
+};
+
+}  // namespace plyform::comm

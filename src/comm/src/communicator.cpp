@@ -1,0 +1,103 @@
+#include "plyform/comm/communicator.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#ifdef PLYFORM_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace plyform::comm {
+namespace {
+
+#ifdef PLYFORM_HAVE_MPI
+// mpirun sets these for the processes it starts: a plain `plyform` (tests, scripts) then runs
+// without initialising MPI at all, as one rank.
+bool started_by_mpirun() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr ||
+         std::getenv("PMIX_RANK") != nullptr;
+}
+bool mpi_on = false;
+#endif
+
+}  // namespace
+
+bool mpi_available() {
+#ifdef PLYFORM_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+Session::Session([[maybe_unused]] int* argc, [[maybe_unused]] char*** argv) {
+#ifdef PLYFORM_HAVE_MPI
+  if (!started_by_mpirun())
+    return;
+  // Only the main thread calls MPI (the OpenMP regions never do).
+  int provided = 0;
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+  mpi_on = true;
+  Communicator& w = Communicator::instance();
+  MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &w.size_);
+#endif
+}
+
+Session::~Session() {
+#ifdef PLYFORM_HAVE_MPI
+  if (mpi_on)
+    MPI_Finalize();
+#endif
+}
+
+Communicator& Communicator::instance() {
+  static Communicator w;
+  return w;
+}
+
+const Communicator& Communicator::world() {
+  return instance();
+}
+
+void Communicator::all_gather(std::span<const double> mine, std::span<double> all,
+                              const std::vector<int>& counts,
+                              const std::vector<int>& displs) const {
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1) {
+    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(),
+                   counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+    return;
+  }
+#endif
+  std::copy(mine.begin(), mine.end(), all.begin() + (displs.empty() ? 0 : displs[0]));
+  static_cast<void>(counts);
+}
+
+std::vector<double> Communicator::all_gather(double mine) const {
+  std::vector<double> all(static_cast<std::size_t>(size_), mine);
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1)
+    MPI_Allgather(&mine, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+#endif
+  return all;
+}
+
+long Communicator::max(long mine) const {
+  long all = mine;
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1)
+    MPI_Allreduce(&mine, &all, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD);
+#endif
+  return all;
+}
+
+void Communicator::abort(int code) const {
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1)
+    MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+  std::exit(code);
+}
+
+}  // namespace plyform::comm

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# A run over N MPI ranks gives the files of the run on one rank, byte for byte (docs/parallel.md:
+# every sum in the same order whatever the rank count). Not a comparison with an earlier output:
+# the property itself, on the model kinds whose passes differ (shells with J2, a rigid punch's
+# contact, the three-layer cup's cohesive interfaces, the hot draw's heat and contacts, a solid
+# block, the DCB's tiebreak-free cohesive strip), and a checkpoint taken on 2 ranks and restarted
+# on 2 (the files and the checkpoint itself those of the uninterrupted run on one rank).
+#
+#   rank_identity.sh PLYFORM WORKDIR
+set -euo pipefail
+plyform=$1
+work=$2
+src=$(cd "$(dirname "$0")/../../.." && pwd)
+# CI runs as root; the ranks share this machine's cores (more ranks than cores: OpenMPI yields).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+
+python3 "$src/bench/decks/plate.py" plate --n 24 --cycles 300
+python3 "$src/bench/decks/plate.py" punch --n 24 --punch --cycles 700
+python3 "$src/examples/square_cup/generate.py" cup --layers 3 --n 8 --plain --depth 3 > /dev/null
+python3 "$src/examples/deep_drawing/generate.py" draw --n 6 --end 0.001 > /dev/null
+python3 "$src/examples/solid_block/generate.py" block --elements 6 > /dev/null
+python3 "$src/examples/dcb/generate.py" dcb --dx 1.0 --end 0.001 > /dev/null
+
+failed=0
+same_files() {  # same_files A B: every file of A in B, byte for byte (summary.json aside)
+  local a=$1 b=$2 f
+  while IFS= read -r f; do
+    if ! cmp -s "$a/$f" "$b/$f"; then
+      echo "FAIL: $b/$f differs from $a/$f"
+      failed=1
+    fi
+  done < <(cd "$a" && find . -type f ! -name summary.json ! -name d3dump | sort)
+}
+
+run_on() {  # run_on RANKS DECK OUT [ARGS...]
+  local np=$1 deck=$2 out=$3
+  shift 3
+  if [[ $np == 1 ]]; then
+    "$plyform" run "$deck" -o "$out" "$@" > "$out.log" 2>&1 || { cat "$out.log"; return 1; }
+  else
+    mpirun -np "$np" "$plyform" run "$deck" -o "$out" "$@" > "$out.log" 2>&1 ||
+      { cat "$out.log"; return 1; }
+    grep -q "\"ranks\": $np" "$out/summary.json" || { echo "FAIL: $out/summary.json: ranks"; failed=1; }
+  fi
+}
+
+for model in plate/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k \
+  block/solid_block.k dcb/dcb.k; do
+  name=$(dirname "$model")
+  run_on 1 "$model" "$name.1"
+  for np in 2 3 4; do
+    run_on "$np" "$model" "$name.$np"
+    same_files "$name.1" "$name.$np"
+  done
+  echo "$name: 1, 2, 3 and 4 ranks compared"
+done
+
+# Restart on 2 ranks: a run stopped by SIGTERM sent to one of its ranks (every rank stops at the
+# same cycle and the first writes the checkpoint), then continued on 2 ranks: the files of the
+# run on one rank without a stop (docs/restart.md: wherever the stop fell).
+python3 "$src/bench/decks/plate.py" long --n 24 --punch --cycles 8000
+run_on 1 long/plate.k restart.1
+mpirun -np 2 "$plyform" run long/plate.k -o restart.2 > restart.2.log 2>&1 &
+launcher=$!
+for _ in $(seq 100); do  # until its first rows are out (at most 10 s)
+  [[ -f restart.2/glstat.csv && $(wc -l < restart.2/glstat.csv) -ge 4 ]] && break
+  sleep 0.1
+done
+rank=$(pgrep -P "$launcher" plyform | head -n 1)
+kill -TERM "$rank"
+status=0
+wait "$launcher" || status=$?
+if ! grep -q "stopped by a signal" restart.2.log; then
+  echo "FAIL: the run on 2 ranks did not stop on the signal (exit $status):"
+  cat restart.2.log
+  exit 1
+fi
+run_on 2 long/plate.k restart.2 --restart
+same_files restart.1 restart.2
+echo "restart on 2 ranks compared ($(grep -o "\"restarted_at\": [0-9.e+-]*" restart.2/summary.json))"
+exit $failed
