@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # What scripts/test.sh leaves out (CI runs both, .ci/run): the `long` tier in the Release build
 # (the examples and mesh studies that run for minutes), then a second build with
-# AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1, without the benchmarks, the examples
-# and the regression tier) running the unit and verification tests under them (the regression
-# tier drives the same code through the command line, decks and files).
+# AddressSanitizer + UndefinedBehaviorSanitizer (-O1 -g1, without the benchmarks, the examples,
+# the regression tier and MPI) running the unit and verification tests under them (the regression
+# tier drives the same code through the command line, decks and files; the runs over MPI ranks
+# are its `mpi` tests).
 # PLYFORM_SKIP_SANITIZE=1 skips the sanitizer pass. Tiers and timings: docs/testing.md.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,7 +23,7 @@ if [[ "${PLYFORM_SKIP_SANITIZE:-0}" != 1 ]]; then
   bash scripts/build.sh "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DPLYFORM_SANITIZE=ON \
     -DPLYFORM_BUILD_BENCHMARKS=OFF -DPLYFORM_BUILD_EXAMPLES=OFF \
-    -DPLYFORM_BUILD_REGRESSION_TESTS=OFF
+    -DPLYFORM_BUILD_REGRESSION_TESTS=OFF -DPLYFORM_MPI=OFF
   # ctest starts the longest tests first when it knows their durations: a fresh tree has none,
   # so it takes the Release tree's (the same tests, each slower by a similar factor). Started
   # last, the minute-long multilayer tests left one core idle for minutes.

@@ -1,6 +1,7 @@
 #include "plyform/comm/communicator.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 #ifdef PLYFORM_HAVE_MPI
@@ -31,7 +32,20 @@ bool mpi_available() {
 }
 
 Session::Session([[maybe_unused]] int* argc, [[maybe_unused]] char*** argv) {
-#ifdef PLYFORM_HAVE_MPI
+#ifndef PLYFORM_HAVE_MPI
+  // Started by mpirun with several processes but built without MPI: each would think itself the
+  // only one and write the same files. Say so instead.
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  if (size == nullptr)
+    size = std::getenv("PMI_SIZE");
+  if (size != nullptr && std::atoi(size) > 1) {
+    std::fprintf(stderr,
+                 "error: this plyform was built without MPI (PLYFORM_MPI off, or no MPI found): "
+                 "it cannot run over %s ranks; run it without mpirun\n",
+                 size);
+    std::exit(1);
+  }
+#else
   if (!started_by_mpirun())
     return;
   // Only the main thread calls MPI (the OpenMP regions never do).
