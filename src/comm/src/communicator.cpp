@@ -88,6 +88,20 @@ void Communicator::all_gather(std::span<const double> mine, std::span<double> al
   static_cast<void>(counts);
 }
 
+void Communicator::all_gather_bytes(std::span<const std::byte> mine, std::span<std::byte> all,
+                                    const std::vector<int>& counts,
+                                    const std::vector<int>& displs) const {
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1) {
+    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_BYTE, all.data(), counts.data(),
+                   displs.data(), MPI_BYTE, MPI_COMM_WORLD);
+    return;
+  }
+#endif
+  std::copy(mine.begin(), mine.end(), all.begin() + (displs.empty() ? 0 : displs[0]));
+  static_cast<void>(counts);
+}
+
 std::vector<double> Communicator::all_gather(double mine) const {
   std::vector<double> all(static_cast<std::size_t>(size_), mine);
 #ifdef PLYFORM_HAVE_MPI

@@ -10,14 +10,20 @@
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
 #include "plyform/core/stopwatch.hpp"
+#include "slave_share.hpp"
 #include "surface_geometry.hpp"
 
 namespace plyform::contact {
 
 void ContactSet::apply(double t, double dt, const double* packed, const double* temperature,
                        double* fx, double* fy, double* fz) {
-  for (auto& pp : passes_) {
-    PassRuntime& pr = *pp;
+  ++applies_;
+  active_.assign(passes_.size(), 0);
+  for (std::size_t ip = 0; ip < passes_.size(); ++ip) {
+    PassRuntime& pr = *passes_[ip];
+    // Over several ranks this rank runs the kinematics, the law and the forces of its slave
+    // nodes (pr.mine); the rest runs whole.
+    const unsigned char* mine = pr.mine;
     const core::ContactPass& cp = *pr.pass;
     const std::size_t ns = cp.slave_count();
     if (t < pr.iface->birth || t > pr.iface->death) {
@@ -61,7 +67,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
       // springs held is released.
       for (std::size_t k = 0; k < ns; ++k) {
-        if (pr.st.seg[k] >= 0 || static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
+        if ((mine != nullptr && mine[k] == 0) || pr.st.seg[k] >= 0 ||
+            static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
           continue;
         pr.st.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
         pr.hist.e_damage[k] += pr.st.stored[k];
@@ -89,26 +96,37 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
 #pragma omp parallel for schedule(static) if (chunks > 1)
     for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
-      const std::size_t b = static_cast<std::size_t>(lc) * kLawChunk;
-      const std::size_t e = std::min(ns, b + kLawChunk);
-      law::BatchInput ci = in;
-      ci.count = e - b;
-      for (const double** a : {&ci.gap, &ci.slip_x, &ci.slip_y, &ci.temperature, &ci.k_normal,
-                               &ci.k_tangent, &ci.area, &ci.mass})
-        *a += b;
-      law::BatchHistory ch = pr.hist;
-      ch.state += b;
-      for (double** a :
-           {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
-            &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
-        *a += b;
-      const law::BatchOutput co{pr.st.pressure.data() + b, pr.st.tau_x.data() + b,
-                                pr.st.tau_y.data() + b, pr.st.stored.data() + b};
-      if (pr.st.tie_state.empty()) {
-        pr.law.update_batch(ci, ch, co);
-      } else {
-        const TieArrays tie = pr.ties();
-        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
+      const std::size_t chunk_begin = static_cast<std::size_t>(lc) * kLawChunk;
+      const std::size_t chunk_end = std::min(ns, chunk_begin + kLawChunk);
+      for (std::size_t b = chunk_begin; b < chunk_end;) {
+        // Over several ranks, the runs of this rank's slave nodes within the chunk.
+        if (mine != nullptr && mine[b] == 0) {
+          ++b;
+          continue;
+        }
+        std::size_t e = b + 1;
+        while (e < chunk_end && (mine == nullptr || mine[e] != 0))
+          ++e;
+        law::BatchInput ci = in;
+        ci.count = e - b;
+        for (const double** a : {&ci.gap, &ci.slip_x, &ci.slip_y, &ci.temperature, &ci.k_normal,
+                                 &ci.k_tangent, &ci.area, &ci.mass})
+          *a += b;
+        law::BatchHistory ch = pr.hist;
+        ch.state += b;
+        for (double** a :
+             {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
+              &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
+          *a += b;
+        const law::BatchOutput co{pr.st.pressure.data() + b, pr.st.tau_x.data() + b,
+                                  pr.st.tau_y.data() + b, pr.st.stored.data() + b};
+        if (pr.st.tie_state.empty()) {
+          pr.law.update_batch(ci, ch, co);
+        } else {
+          const TieArrays tie = pr.ties();
+          tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
+        }
+        b = e;
       }
     }
 
@@ -117,6 +135,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
       const auto k = static_cast<std::size_t>(lk);
+      if (mine != nullptr && mine[k] == 0)
+        continue;
       double* f = &pr.st.force[3 * k];
       const core::Index s = pr.st.seg[k];
       pr.st.end_power[k] = 0.0;
@@ -138,6 +158,26 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       pr.st.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
       pr.st.work_part[k] += 0.5 * dt * pr.st.end_power[k];
     }
+    pr.seconds[3] += clock.lap();
+    active_[ip] = 1;
+  }
+
+  // Over several ranks: what the scatter and the books read of every pass's slave nodes, from
+  // their owners to every rank, in one exchange for all the passes (nothing above reads what the
+  // scatter below writes: the kinematics read positions and velocities, not forces).
+  if (!shares_.empty()) {
+    core::Stopwatch clock;
+    SlaveShare::exchange_cycle(shares_, passes_, active_);
+    exchange_seconds_ += clock.lap();
+  }
+
+  for (std::size_t ip = 0; ip < passes_.size(); ++ip) {
+    if (active_[ip] == 0)
+      continue;
+    PassRuntime& pr = *passes_[ip];
+    const core::ContactPass& cp = *pr.pass;
+    const std::size_t ns = cp.slave_count();
+    core::Stopwatch clock;
     pr.st.dt_last = dt;
     pr.st.work += chunked_sum(ns, pr.chunk_sums, [&](std::size_t k) { return pr.st.work_part[k]; });
     pr.st.surface +=

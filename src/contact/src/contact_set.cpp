@@ -10,6 +10,7 @@
 
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
+#include "slave_share.hpp"
 
 namespace plyform::contact {
 
@@ -288,6 +289,23 @@ std::size_t ContactSet::slave_count() const {
   for (const auto& p : passes_)
     n += p->pass->slave_count();
   return n;
+}
+
+void ContactSet::share_slaves(const comm::Communicator& comm, std::span<const int> node_owner) {
+  if (comm.size() < 2)
+    return;
+  shares_.clear();
+  for (auto& pp : passes_) {
+    const core::ContactPass& cp = *pp->pass;
+    std::vector<int> owner(cp.slave_count());
+    for (std::size_t k = 0; k < owner.size(); ++k) {
+      const int o = node_owner[static_cast<std::size_t>(cp.slave_nodes[k])];
+      owner[k] = o >= 0 ? o : static_cast<int>(k % static_cast<std::size_t>(comm.size()));
+    }
+    shares_.push_back(std::make_unique<SlaveShare>(comm, owner));
+    pp->mine = shares_.back()->mine().data();
+  }
+  gathered_at_ = applies_;
 }
 
 }  // namespace plyform::contact

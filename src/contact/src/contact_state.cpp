@@ -5,6 +5,7 @@
 
 #include "pass_runtime.hpp"
 #include "plyform/core/state_archive.hpp"
+#include "slave_share.hpp"
 
 namespace plyform::contact {
 
@@ -89,6 +90,14 @@ void PassState::visit(core::StateArchive& a) {
                          {"prev_rs", &prev_rs}}) {
     a.array(name, *v);
   }
+}
+
+void ContactSet::gather_state() {
+  if (shares_.empty() || gathered_at_ == applies_)
+    return;
+  for (std::size_t p = 0; p < passes_.size(); ++p)
+    shares_[p]->gather_state(*passes_[p]);
+  gathered_at_ = applies_;
 }
 
 }  // namespace plyform::contact

@@ -100,6 +100,8 @@ void measure(PassRuntime& pr, double dt, const double* packed, const double* tem
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
+    if (pr.mine != nullptr && pr.mine[k] == 0)
+      continue;  // another rank's slave node (slave_share.hpp)
     const core::Index node = cp.slave_nodes[k];
     // First half of the trapezoidal work of the step just taken, with last cycle's force (and
     // last cycle's frame and surface point, still in the arrays). Where the step changed, that

@@ -134,6 +134,8 @@ struct PassRuntime {
   law::HistoryStore history;
   law::BatchHistory hist;
   PassState st;
+  // Over several MPI ranks: 1 for the slave nodes this rank handles (null: all of them).
+  const unsigned char* mine = nullptr;
 
   // Fixed by the set-up (and start(), for the normals' signs).
   double margin = 0.0;

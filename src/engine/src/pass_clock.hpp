@@ -41,6 +41,7 @@ struct PassClock {
 struct TimingSources {
   std::vector<double> solid_block_seconds, shell_block_seconds;
   std::vector<contact::InterfaceTiming> contact;
+  double contact_exchange_seconds = 0.0;  // over several ranks: the slave nodes' forces
   double heat_solve_seconds = 0.0;
   double loop_seconds = 0.0;
 };

@@ -89,6 +89,10 @@ PassTiming timing_table(const core::Model& model, const PassClock& clock,
     add("contact", name + "forces", c.forces);
     contact_timed += c.search + c.projection + c.law + c.forces;
   }
+  if (sources.contact_exchange_seconds > 0.0) {
+    add("ranks", "exchange of the contact's slave nodes", sources.contact_exchange_seconds);
+    contact_timed += sources.contact_exchange_seconds;
+  }
   if (!sources.contact.empty())
     add("contact", "interfaces not in their birth-death window, and the passes' set-up",
         clock.at(Pass::contact) - contact_timed);

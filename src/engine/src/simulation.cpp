@@ -570,6 +570,8 @@ void Simulation::State::set_up_run() {
   if (options.ranks != nullptr && options.ranks->size() > 1) {
     PLYFORM_INVARIANT(options.node_owner.size() == n, "one owner per node");
     ranks.emplace(model, phases, options.node_owner, *options.ranks);
+    if (contact)
+      contact->share_slaves(*options.ranks, options.node_owner);
     piece_results.resize(phases.size());
     piece_books.resize(phases.size());
   }
@@ -865,9 +867,12 @@ void Simulation::State::internal_on_ranks(double dt_step) {
   elements_result = r;
 }
 
-// Over several ranks, every element's state from the rank that reported it, before anything reads
+// Over several ranks, every element's state from the rank that reported it (and every contact slave
+// node's from its owner), before anything reads
 // the elements' state (the states, elout, the end's files, a checkpoint); once a cycle.
 void Simulation::State::gather_element_state() {
+  if (contact)
+    contact->gather_state();  // its own guard: once per cycle
   if (!ranks || element_state_cycle == cycle)
     return;
   ranks->gather_element_state(shells, solids);
@@ -1303,8 +1308,10 @@ Energies Simulation::State::measure_energies() {
 
 void Simulation::State::check_books(const Energies& e, bool last) {
   std::vector<contact::InterfaceReport> reports;
-  if (contact)
+  if (contact) {
+    contact->gather_state();  // over several ranks: every slave node's books
     reports = contact->report();
+  }
   verdict.judge(e, std::abs(kinetic0) + stored0, hourglass_leader(), reports, last, res);
 }
 
@@ -1420,8 +1427,10 @@ void Simulation::State::write_outputs(bool last) {
   }
   if ((contact || ties) && due(Output::rcforc, out.rcforc_dt)) {
     std::vector<contact::InterfaceReport> reports;
-    if (contact)
+    if (contact) {
+      contact->gather_state();
       reports = contact->report();
+    }
     if (ties) {
       // The tied contacts after the others, in the deck's order among themselves.
       for (std::size_t k = 0; k < model.tied.size(); ++k) {
@@ -1445,6 +1454,7 @@ void Simulation::State::write_outputs(bool last) {
     wrote(Output::rwforc, out.rwforc_dt);
   }
   if (contact && due(Output::sleout, out.sleout_dt)) {
+    contact->gather_state();
     sink.interface_energies(t, contact->report());
     wrote(Output::sleout, out.sleout_dt);
   }
@@ -1559,6 +1569,7 @@ bool Simulation::State::heat_conduction(bool now) {
   heat_links.clear();
   thermal::MechanicalHeat mechanical;
   if (contact) {
+    contact->gather_state();  // over several ranks: every slave node's gap and friction
     contact->heat_links(packed.data(), heat_links);
     friction_heat.assign(n, 0.0);
     contact->take_friction_heat(friction_heat);
@@ -1727,8 +1738,10 @@ PassTiming Simulation::State::timing(double loop_seconds) const {
           item_seconds[phase_offset[p] + w];
     }
   }
-  if (contact)
+  if (contact) {
     src.contact = contact->timing();
+    src.contact_exchange_seconds = contact->exchange_seconds();
+  }
   if (heat)
     src.heat_solve_seconds = heat->solve_seconds();
   src.loop_seconds = loop_seconds;

@@ -5,6 +5,7 @@
 // every call is a copy or nothing.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -35,6 +36,9 @@ class Communicator {
   /// from rank r at offset displs[r] (the same counts on every rank).
   void all_gather(std::span<const double> mine, std::span<double> all,
                   const std::vector<int>& counts, const std::vector<int>& displs) const;
+  /// The same for raw bytes (counts and offsets in bytes).
+  void all_gather_bytes(std::span<const std::byte> mine, std::span<std::byte> all,
+                        const std::vector<int>& counts, const std::vector<int>& displs) const;
   /// The same, one value of `mine` per rank (counts all 1).
   [[nodiscard]] std::vector<double> all_gather(double mine) const;
   /// The largest of every rank's value.

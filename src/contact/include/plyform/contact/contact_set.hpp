@@ -9,14 +9,18 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "plyform/comm/communicator.hpp"
 #include "plyform/core/model.hpp"
 #include "plyform/core/state_archive.hpp"
 #include "plyform/law/node_state.hpp"
 
 namespace plyform::contact {
+
+class SlaveShare;
 
 /// Totals of one interface (deck id), at the time of the last pass.
 struct InterfaceReport {
@@ -130,6 +134,15 @@ class ContactSet {
   void apply(double t, double dt, const double* packed, const double* temperature, double* fx,
              double* fy, double* fz);
 
+  /// Over several MPI ranks (docs/parallel.md): from now on each rank runs the kinematics, the
+  /// law and the forces of the slave nodes it owns (`node_owner`: per model node, its rank; -1
+  /// for a node no deformable element touches, whose slave places are shared out in turn), and
+  /// apply() hands what the scatter and the books read to every rank.
+  void share_slaves(const comm::Communicator& comm, std::span<const int> node_owner);
+  /// Over several ranks, before anything reads the passes' whole state (reports, cohesive
+  /// results, heat, the checkpoint): every slave node's state from its owner. Once per apply().
+  void gather_state();
+
   /// The contact's stable step vote (infinity when no slave node is near a segment).
   [[nodiscard]] double stable_step() const;
   /// Total contact energy (all interfaces): the glstat `contact` column.
@@ -149,6 +162,8 @@ class ContactSet {
   /// side and the rest to its master side (a segment's nodes by the shape functions).
   void take_friction_heat(std::vector<double>& energy);
   [[nodiscard]] std::size_t slave_count() const;
+  /// Over several ranks, the wall seconds of apply()'s exchange of the slave nodes' forces.
+  [[nodiscard]] double exchange_seconds() const { return exchange_seconds_; }
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }
   /// Each interface's wall seconds in apply() by stage, in the model's order.
@@ -179,6 +194,13 @@ class ContactSet {
   std::vector<std::string> warnings_;
   long searches_ = 0;
   double tssfac_ = 0.9;
+  // Over several ranks: per pass, its slave nodes shared out (empty on one rank); how many
+  // apply() calls ran, and at which gather_state() last brought the state home.
+  std::vector<std::unique_ptr<SlaveShare>> shares_;
+  std::vector<unsigned char> active_;  // apply(): the passes in their birth-death window
+  double exchange_seconds_ = 0.0;      // apply()'s exchange over the ranks
+  long applies_ = 0;
+  long gathered_at_ = 0;
 };
 
 }  // namespace plyform::contact

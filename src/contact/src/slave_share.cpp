@@ -1,0 +1,166 @@
+#include "slave_share.hpp"
+
+#include <cstdint>
+#include <cstring>
+
+namespace plyform::contact {
+namespace {
+
+void layout(const std::vector<std::size_t>& per_rank, std::vector<int>& counts,
+            std::vector<int>& displs) {
+  counts.resize(per_rank.size());
+  displs.resize(per_rank.size());
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < per_rank.size(); ++r) {
+    counts[r] = static_cast<int>(per_rank[r]);
+    displs[r] = static_cast<int>(at);
+    at += per_rank[r];
+  }
+}
+
+// A per-slave array as bytes: its data and the bytes each slave node holds.
+struct SlaveArray {
+  std::byte* data;
+  std::size_t bytes;
+};
+
+template <class T>
+void add(std::vector<SlaveArray>& a, T* data, std::size_t per_node) {
+  if (data != nullptr)
+    a.push_back({reinterpret_cast<std::byte*>(data), per_node * sizeof(T)});
+}
+
+template <class T>
+void add(std::vector<SlaveArray>& a, std::vector<T>& v, std::size_t per_node) {
+  if (!v.empty())
+    add(a, v.data(), per_node);
+}
+
+// What the owner of a slave node alone updates and exchange_cycle does not carry.
+std::vector<SlaveArray> owner_arrays(PassRuntime& pr) {
+  PassState& st = pr.st;
+  std::vector<SlaveArray> a;
+  add(a, st.frame, 9);
+  for (std::vector<double>* v :
+       {&st.gap, &st.slip_x, &st.slip_y, &st.temperature, &st.k_normal, &st.k_tangent, &st.m_eff,
+        &st.arrival_depth, &st.pressure, &st.tau_x, &st.tau_y, &st.stored, &st.gap_jump,
+        &st.end_power, &st.tie_gap0})
+    add(a, *v, 1);
+  add(a, st.tie_state, 1);
+  const law::BatchHistory& h = pr.hist;
+  add(a, h.state, 1);
+  for (double* v : {h.beta, h.gap, h.slip_x, h.slip_y, h.opening_x, h.opening_y, h.e_damage,
+                    h.e_viscous, h.e_friction, h.e_damping, h.e_healing, h.damping})
+    add(a, v, 1);
+  return a;
+}
+
+constexpr std::size_t kCycleValues = 17;
+
+}  // namespace
+
+SlaveShare::SlaveShare(const comm::Communicator& comm, const std::vector<int>& owner)
+    : comm_(&comm) {
+  const auto ranks = static_cast<std::size_t>(comm.size());
+  mine_.resize(owner.size());
+  std::vector<std::vector<std::size_t>> by_rank(ranks);
+  for (std::size_t k = 0; k < owner.size(); ++k) {
+    mine_[k] = owner[k] == comm.rank() ? 1 : 0;
+    by_rank[static_cast<std::size_t>(owner[k])].push_back(k);
+  }
+  owned_start_.assign(1, 0);
+  for (const auto& list : by_rank) {
+    owned_.insert(owned_.end(), list.begin(), list.end());
+    owned_start_.push_back(owned_.size());
+  }
+}
+
+void SlaveShare::exchange_cycle(std::vector<std::unique_ptr<SlaveShare>>& shares,
+                                std::vector<std::unique_ptr<PassRuntime>>& passes,
+                                const std::vector<unsigned char>& active) {
+  const comm::Communicator& comm = *shares.front()->comm_;
+  const auto me = static_cast<std::size_t>(comm.rank());
+  const auto ranks = static_cast<std::size_t>(comm.size());
+  thread_local std::vector<double> send, receive;
+  send.clear();
+  std::vector<std::size_t> per_rank(ranks, 0);
+  for (std::size_t p = 0; p < passes.size(); ++p) {
+    if (active[p] == 0)
+      continue;
+    const SlaveShare& sh = *shares[p];
+    const PassState& st = passes[p]->st;
+    for (std::size_t r = 0; r < ranks; ++r)
+      per_rank[r] += kCycleValues * (sh.owned_start_[r + 1] - sh.owned_start_[r]);
+    for (std::size_t j = sh.owned_start_[me]; j < sh.owned_start_[me + 1]; ++j) {
+      const std::size_t k = sh.owned_[j];
+      const double* f = &st.force[3 * k];
+      const double* n = &st.frame[9 * k];
+      const double* rs = &st.rs[3 * k];
+      const double* w = &st.shape[4 * k];
+      send.insert(send.end(), {static_cast<double>(st.seg[k]), static_cast<double>(st.side[k]),
+                               f[0], f[1], f[2], n[0], n[1], n[2], rs[0], rs[1], rs[2], w[0], w[1],
+                               w[2], w[3], st.work_part[k], st.surface_part[k]});
+    }
+  }
+  std::vector<int> counts, displs;
+  layout(per_rank, counts, displs);
+  std::size_t total = 0;
+  for (const std::size_t c : per_rank)
+    total += c;
+  receive.resize(total);
+  comm.all_gather(send, receive, counts, displs);
+  // Rank by rank, each rank's passes in order: as it packed them.
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    for (std::size_t p = 0; p < passes.size(); ++p) {
+      if (active[p] == 0)
+        continue;
+      const SlaveShare& sh = *shares[p];
+      PassState& st = passes[p]->st;
+      for (std::size_t j = sh.owned_start_[r]; j < sh.owned_start_[r + 1];
+           ++j, at += kCycleValues) {
+        const std::size_t k = sh.owned_[j];
+        const double* v = &receive[at];
+        st.seg[k] = static_cast<core::Index>(v[0]);
+        st.side[k] = static_cast<signed char>(v[1]);
+        std::copy_n(v + 2, 3, &st.force[3 * k]);
+        std::copy_n(v + 5, 3, &st.frame[9 * k]);
+        std::copy_n(v + 8, 3, &st.rs[3 * k]);
+        std::copy_n(v + 11, 4, &st.shape[4 * k]);
+        st.work_part[k] = v[15];
+        st.surface_part[k] = v[16];
+      }
+    }
+  }
+}
+
+void SlaveShare::gather_state(PassRuntime& pr) {
+  const auto me = static_cast<std::size_t>(comm_->rank());
+  const auto ranks = static_cast<std::size_t>(comm_->size());
+  const std::vector<SlaveArray> arrays = owner_arrays(pr);
+  std::size_t per_node = 0;
+  for (const SlaveArray& a : arrays)
+    per_node += a.bytes;
+  send_bytes_.clear();
+  for (std::size_t j = owned_start_[me]; j < owned_start_[me + 1]; ++j) {
+    const std::size_t k = owned_[j];
+    for (const SlaveArray& a : arrays)
+      send_bytes_.insert(send_bytes_.end(), a.data + a.bytes * k, a.data + a.bytes * (k + 1));
+  }
+  std::vector<std::size_t> per_rank(ranks);
+  for (std::size_t r = 0; r < ranks; ++r)
+    per_rank[r] = per_node * (owned_start_[r + 1] - owned_start_[r]);
+  std::vector<int> counts, displs;
+  layout(per_rank, counts, displs);
+  receive_bytes_.resize(per_node * owned_.size());
+  comm_->all_gather_bytes(send_bytes_, receive_bytes_, counts, displs);
+  std::size_t at = 0;
+  for (const std::size_t k : owned_) {
+    for (const SlaveArray& a : arrays) {
+      std::memcpy(a.data + a.bytes * k, &receive_bytes_[at], a.bytes);
+      at += a.bytes;
+    }
+  }
+}
+
+}  // namespace plyform::contact
