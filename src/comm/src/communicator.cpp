@@ -74,41 +74,53 @@ const Communicator& Communicator::world() {
   return instance();
 }
 
+#ifdef PLYFORM_HAVE_MPI
+namespace {
+
+// MPI's counts and offsets of an all-gather from each rank's count.
+void layout(std::span<const std::size_t> per_rank, std::vector<int>& counts,
+            std::vector<int>& displs) {
+  counts.resize(per_rank.size());
+  displs.resize(per_rank.size());
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < per_rank.size(); ++r) {
+    counts[r] = static_cast<int>(per_rank[r]);
+    displs[r] = static_cast<int>(at);
+    at += per_rank[r];
+  }
+}
+
+}  // namespace
+#endif
+
 void Communicator::all_gather(std::span<const double> mine, std::span<double> all,
-                              const std::vector<int>& counts,
-                              const std::vector<int>& displs) const {
+                              std::span<const std::size_t> per_rank) const {
 #ifdef PLYFORM_HAVE_MPI
   if (size_ > 1) {
+    std::vector<int> counts, displs;
+    layout(per_rank, counts, displs);
     MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(),
                    counts.data(), displs.data(), MPI_DOUBLE, MPI_COMM_WORLD);
     return;
   }
 #endif
-  std::copy(mine.begin(), mine.end(), all.begin() + (displs.empty() ? 0 : displs[0]));
-  static_cast<void>(counts);
+  static_cast<void>(per_rank);
+  std::copy(mine.begin(), mine.end(), all.begin());
 }
 
 void Communicator::all_gather_bytes(std::span<const std::byte> mine, std::span<std::byte> all,
-                                    const std::vector<int>& counts,
-                                    const std::vector<int>& displs) const {
+                                    std::span<const std::size_t> per_rank) const {
 #ifdef PLYFORM_HAVE_MPI
   if (size_ > 1) {
+    std::vector<int> counts, displs;
+    layout(per_rank, counts, displs);
     MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_BYTE, all.data(), counts.data(),
                    displs.data(), MPI_BYTE, MPI_COMM_WORLD);
     return;
   }
 #endif
-  std::copy(mine.begin(), mine.end(), all.begin() + (displs.empty() ? 0 : displs[0]));
-  static_cast<void>(counts);
-}
-
-std::vector<double> Communicator::all_gather(double mine) const {
-  std::vector<double> all(static_cast<std::size_t>(size_), mine);
-#ifdef PLYFORM_HAVE_MPI
-  if (size_ > 1)
-    MPI_Allgather(&mine, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
-#endif
-  return all;
+  static_cast<void>(per_rank);
+  std::copy(mine.begin(), mine.end(), all.begin());
 }
 
 long Communicator::max(long mine) const {

@@ -6,18 +6,6 @@
 namespace plyform::contact {
 namespace {
 
-void layout(const std::vector<std::size_t>& per_rank, std::vector<int>& counts,
-            std::vector<int>& displs) {
-  counts.resize(per_rank.size());
-  displs.resize(per_rank.size());
-  std::size_t at = 0;
-  for (std::size_t r = 0; r < per_rank.size(); ++r) {
-    counts[r] = static_cast<int>(per_rank[r]);
-    displs[r] = static_cast<int>(at);
-    at += per_rank[r];
-  }
-}
-
 // A per-slave array as bytes: its data and the bytes each slave node holds.
 struct SlaveArray {
   std::byte* data;
@@ -102,13 +90,11 @@ void SlaveShare::exchange_cycle(std::vector<std::unique_ptr<SlaveShare>>& shares
                                w[2], w[3], st.work_part[k], st.surface_part[k]});
     }
   }
-  std::vector<int> counts, displs;
-  layout(per_rank, counts, displs);
   std::size_t total = 0;
   for (const std::size_t c : per_rank)
     total += c;
   receive.resize(total);
-  comm.all_gather(send, receive, counts, displs);
+  comm.all_gather(send, receive, per_rank);
   // Rank by rank, each rank's passes in order: as it packed them.
   std::size_t at = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
@@ -150,10 +136,8 @@ void SlaveShare::gather_state(PassRuntime& pr) {
   std::vector<std::size_t> per_rank(ranks);
   for (std::size_t r = 0; r < ranks; ++r)
     per_rank[r] = per_node * (owned_start_[r + 1] - owned_start_[r]);
-  std::vector<int> counts, displs;
-  layout(per_rank, counts, displs);
   receive_bytes_.resize(per_node * owned_.size());
-  comm_->all_gather_bytes(send_bytes_, receive_bytes_, counts, displs);
+  comm_->all_gather_bytes(send_bytes_, receive_bytes_, per_rank);
   std::size_t at = 0;
   for (const std::size_t k : owned_) {
     for (const SlaveArray& a : arrays) {

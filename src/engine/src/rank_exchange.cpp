@@ -50,19 +50,6 @@ std::vector<std::vector<double>*> element_arrays(element::SolidBlockState& st) {
   return a;
 }
 
-// Counts and offsets of an all-gather from each rank's count.
-void layout(const std::vector<std::size_t>& per_rank, std::vector<int>& counts,
-            std::vector<int>& displs) {
-  counts.resize(per_rank.size());
-  displs.resize(per_rank.size());
-  std::size_t at = 0;
-  for (std::size_t r = 0; r < per_rank.size(); ++r) {
-    counts[r] = static_cast<int>(per_rank[r]);
-    displs[r] = static_cast<int>(at);
-    at += per_rank[r];
-  }
-}
-
 }  // namespace
 
 RankExchange::RankExchange(const core::Model& model,
@@ -165,10 +152,8 @@ void RankExchange::gather_nodes(std::span<double* const> fields) {
   std::vector<std::size_t> per_rank(ranks);
   for (std::size_t r = 0; r < ranks; ++r)
     per_rank[r] = k * (owned_start_[r + 1] - owned_start_[r]);
-  std::vector<int> counts, displs;
-  layout(per_rank, counts, displs);
   receive_.resize(k * owned_.size());
-  comm_->all_gather(send_, receive_, counts, displs);
+  comm_->all_gather(send_, receive_, per_rank);
   std::size_t at = 0;
   for (const core::Index node : owned_) {
     for (double* f : fields)
@@ -204,10 +189,8 @@ void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& p
                   (thickness ? reported_shells_[r] : 0);
     total += per_rank[r];
   }
-  std::vector<int> counts, displs;
-  layout(per_rank, counts, displs);
   receive_.resize(total);
-  comm_->all_gather(send_, receive_, counts, displs);
+  comm_->all_gather(send_, receive_, per_rank);
   const auto take = [&](std::size_t at) {
     const double* v = &receive_[at];
     return RangeBooks{v[0], v[1], v[2], v[3], v[4], v[5]};
@@ -259,9 +242,8 @@ RankElementReport RankExchange::choose(const RankElementReport& mine) const {
                                      static_cast<double>(mine.failed_element)};
   const auto ranks = static_cast<std::size_t>(comm_->size());
   std::vector<double> all(k * ranks);
-  std::vector<int> counts, displs;
-  layout(std::vector<std::size_t>(ranks, k), counts, displs);
-  comm_->all_gather(one, all, counts, displs);
+  const std::vector<std::size_t> per_rank(ranks, k);
+  comm_->all_gather(one, all, per_rank);
   RankElementReport best;
   const auto place = [](const double* v, std::size_t at) {
     return std::make_tuple(v[at], v[at + 1], v[at + 2]);
@@ -332,13 +314,11 @@ void RankExchange::gather_element_state(std::vector<element::ShellBlockState>& s
       send_.insert(send_.end(), at, at + static_cast<std::ptrdiff_t>(stride));
     }
   }
-  std::vector<int> counts, displs;
-  layout(per_rank, counts, displs);
   std::size_t total = 0;
   for (const std::size_t c : per_rank)
     total += c;
   receive_.resize(total);
-  comm_->all_gather(send_, receive_, counts, displs);
+  comm_->all_gather(send_, receive_, per_rank);
   std::size_t at = 0;
   for (const ElementRef& x : reported_) {
     for (const auto& [v, stride] : arrays_of(x)) {

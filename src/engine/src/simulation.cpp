@@ -282,6 +282,9 @@ struct Simulation::State {
   void pack();
   void internal(double dt_step);
   void internal_on_ranks(double dt_step);
+  ItemResult run_item(const WorkItem& it, double dt_step, const element::NodalForces& forces,
+                      const element::NodalMoments& moments, const element::NodalSpin& spin);
+  void book_item(const WorkItem& it, const ItemResult& x, InternalResult& r);
   void gather_element_state();
   double advance_velocity(double t_now, double dt_prev, double dt_next, double dt_avg);
   /// The times of one velocity pass: t_n, the step before and after it, their mean.
@@ -673,6 +676,35 @@ void Simulation::State::pack() {
   }
 }
 
+// One work item's (or piece's) kernel call.
+ItemResult Simulation::State::run_item(const WorkItem& it, double dt_step,
+                                       const element::NodalForces& forces,
+                                       const element::NodalMoments& moments,
+                                       const element::NodalSpin& spin) {
+  if (it.shell) {
+    const core::ShellBlock& blk = model.shell_blocks[it.block];
+    return item_result(element::shell_forces(
+        blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view, spin,
+        dt_step, it.begin, it.end, forces, moments));
+  }
+  const core::SolidBlock& blk = model.solid_blocks[it.block];
+  return item_result(
+      element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
+                            solids[it.block], view, dt_step, it.begin, it.end, forces));
+}
+
+// A work item's books into the cycle's sums and its block's (in the loop's order).
+void Simulation::State::book_item(const WorkItem& it, const ItemResult& x, InternalResult& r) {
+  r.hourglass += x.hourglass_energy;
+  r.internal += x.internal_energy;
+  std::array<double, 2>& books = it.shell ? shell_books[it.block] : solid_books[it.block];
+  books[0] += x.internal_energy;
+  books[1] += x.hourglass_energy;
+  std::array<double, 4>& power = it.shell ? shell_power[it.block] : solid_power[it.block];
+  for (std::size_t k = 0; k < 4; ++k)
+    power[k] += x.power[k];
+}
+
 // Element forces at the current positions into `elements_result`; the nodal force arrays must be
 // zero and the packed copy current (the positions and velocity passes see to both).
 void Simulation::State::internal(double dt_step) {
@@ -697,21 +729,8 @@ void Simulation::State::internal(double dt_step) {
       for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
         const WorkItem& it = phase[static_cast<std::size_t>(w)];
         const std::size_t at = phase_offset[p] + static_cast<std::size_t>(w);
-        ItemResult& out = item_results[at];
         core::Stopwatch item_clock;
-        if (it.shell) {
-          const core::ShellBlock& blk = model.shell_blocks[it.block];
-          const element::ShellResult x = element::shell_forces(
-              blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view,
-              spin, dt_step, it.begin, it.end, forces, moments);
-          out = item_result(x);
-        } else {
-          const core::SolidBlock& blk = model.solid_blocks[it.block];
-          const element::SolidResult x =
-              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
-                                    solids[it.block], view, dt_step, it.begin, it.end, forces);
-          out = item_result(x);
-        }
+        item_results[at] = run_item(it, dt_step, forces, moments, spin);
         item_seconds[at] += item_clock.lap();
       }
     }
@@ -735,15 +754,7 @@ void Simulation::State::internal(double dt_step) {
         r.dt_item = phases[p][w];
         r.dt_element = x.dt_element;
       }
-      r.hourglass += x.hourglass_energy;
-      r.internal += x.internal_energy;
-      const WorkItem& it = phases[p][w];
-      std::array<double, 2>& books = it.shell ? shell_books[it.block] : solid_books[it.block];
-      books[0] += x.internal_energy;
-      books[1] += x.hourglass_energy;
-      std::array<double, 4>& power = it.shell ? shell_power[it.block] : solid_power[it.block];
-      for (std::size_t k = 0; k < 4; ++k)
-        power[k] += x.power[k];
+      book_item(phases[p][w], x, r);
     }
   }
   elements_result = r;
@@ -770,19 +781,9 @@ void Simulation::State::internal_on_ranks(double dt_step) {
         const element::NodalForces forces{s.fx.data(), s.fy.data(), s.fz.data(),
                                           plastic_work.empty() ? nullptr : plastic_work.data(),
                                           ranks->books(it.shell, it.block)};
-        ItemResult& out = piece_results[p][static_cast<std::size_t>(w)];
         core::Stopwatch item_clock;
-        if (it.shell) {
-          const core::ShellBlock& blk = model.shell_blocks[it.block];
-          out = item_result(element::shell_forces(
-              blk, model.materials[static_cast<std::size_t>(blk.material)], shells[it.block], view,
-              spin, dt_step, it.begin, it.end, forces, moments));
-        } else {
-          const core::SolidBlock& blk = model.solid_blocks[it.block];
-          out = item_result(
-              element::solid_forces(blk, model.materials[static_cast<std::size_t>(blk.material)],
-                                    solids[it.block], view, dt_step, it.begin, it.end, forces));
-        }
+        piece_results[p][static_cast<std::size_t>(w)] =
+            run_item(it, dt_step, forces, moments, spin);
         item_seconds[phase_offset[p] + piece.item] += item_clock.lap();
       }
     }
@@ -848,20 +849,12 @@ void Simulation::State::internal_on_ranks(double dt_step) {
     power = {};
   for (std::size_t p = 0; p < phases.size(); ++p) {  // in order: as on one rank
     for (std::size_t w = 0; w < phases[p].size(); ++w) {
-      const WorkItem& it = phases[p][w];
       const RangeBooks& b = ranks->item_books()[p][w];
       ItemResult x;
       x.internal_energy = b.internal;
       x.hourglass_energy = b.hourglass;
       x.power = {b.start_power, b.end_power, b.hourglass_start_power, b.hourglass_end_power};
-      r.hourglass += x.hourglass_energy;
-      r.internal += x.internal_energy;
-      std::array<double, 2>& books_of = it.shell ? shell_books[it.block] : solid_books[it.block];
-      books_of[0] += x.internal_energy;
-      books_of[1] += x.hourglass_energy;
-      std::array<double, 4>& power = it.shell ? shell_power[it.block] : solid_power[it.block];
-      for (std::size_t k = 0; k < 4; ++k)
-        power[k] += x.power[k];
+      book_item(phases[p][w], x, r);
     }
   }
   elements_result = r;

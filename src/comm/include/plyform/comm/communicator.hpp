@@ -32,15 +32,13 @@ class Communicator {
   [[nodiscard]] int rank() const { return rank_; }
   [[nodiscard]] int size() const { return size_; }
 
-  /// Every rank's `mine` laid end to end, rank by rank, into `all` on every rank; counts[r] values
-  /// from rank r at offset displs[r] (the same counts on every rank).
+  /// Every rank's `mine` laid end to end, rank by rank, into `all` on every rank: per_rank[r]
+  /// values from rank r (the same counts on every rank; `all` holds their sum).
   void all_gather(std::span<const double> mine, std::span<double> all,
-                  const std::vector<int>& counts, const std::vector<int>& displs) const;
-  /// The same for raw bytes (counts and offsets in bytes).
+                  std::span<const std::size_t> per_rank) const;
+  /// The same for raw bytes.
   void all_gather_bytes(std::span<const std::byte> mine, std::span<std::byte> all,
-                        const std::vector<int>& counts, const std::vector<int>& displs) const;
-  /// The same, one value of `mine` per rank (counts all 1).
-  [[nodiscard]] std::vector<double> all_gather(double mine) const;
+                        std::span<const std::size_t> per_rank) const;
   /// The largest of every rank's value.
   [[nodiscard]] long max(long mine) const;
   /// Stops every rank of the run with `code` (a rank that cannot go on while the others wait).
