@@ -60,8 +60,8 @@ for model in plate/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k 
 done
 
 # Restart on 2 ranks: a run stopped by SIGTERM sent to one of its ranks (every rank stops at the
-# same cycle and the first writes the checkpoint), then continued on 2 ranks: the files of the
-# run on one rank without a stop (docs/restart.md: wherever the stop fell).
+# same cycle and the first writes the checkpoint), then continued on 2 ranks, and on 1: the files
+# of the run on one rank without a stop (docs/restart.md: wherever the stop fell).
 python3 "$src/bench/decks/plate.py" long --n 24 --punch --cycles 8000
 run_on 1 long/plate.k restart.1
 mpirun -np 2 "$plyform" run long/plate.k -o restart.2 > restart.2.log 2>&1 &
@@ -79,7 +79,10 @@ if ! grep -q "stopped by a signal" restart.2.log; then
   cat restart.2.log
   exit 1
 fi
+cp -r restart.2 restart.2to1  # the checkpoint holds the whole state: any rank count goes on
 run_on 2 long/plate.k restart.2 --restart
 same_files restart.1 restart.2
+run_on 1 long/plate.k restart.2to1 --restart
+same_files restart.1 restart.2to1
 echo "restart on 2 ranks compared ($(grep -o "\"restarted_at\": [0-9.e+-]*" restart.2/summary.json))"
 exit $failed
