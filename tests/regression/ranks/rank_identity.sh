@@ -3,8 +3,8 @@
 # every sum in the same order whatever the rank count). Not a comparison with an earlier output:
 # the property itself, on the model kinds whose passes differ (shells with J2, a rigid punch's
 # contact, the three-layer cup's cohesive interfaces, the hot draw's heat and contacts, a solid
-# block, the DCB's tiebreak-free cohesive strip), and a checkpoint taken on 2 ranks and restarted
-# on 2 (the files and the checkpoint itself those of the uninterrupted run on one rank).
+# block, the DCB's cohesive strip), and a run stopped on 2 ranks and restarted on 2 and on 1 (the
+# files those of the uninterrupted run on one rank).
 #
 #   rank_identity.sh PLYFORM WORKDIR
 set -euo pipefail
