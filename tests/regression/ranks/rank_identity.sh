@@ -14,9 +14,20 @@ src=$(cd "$(dirname "$0")/../../.." && pwd)
 # CI runs as root; the ranks share this machine's cores (more ranks than cores: OpenMPI yields).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# Containers often forbid the cross-memory attach of OpenMPI's shared-memory transport: copy
+# through the shared segment instead.
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
+
+# A machine whose MPI cannot start two processes at all cannot run this test (ctest: skipped,
+# exit 77), and says why; a plyform that starts there and fails is a failure.
+if ! mpirun -np 2 "$plyform" --version > mpi_probe.log 2>&1; then
+  echo "SKIP: mpirun cannot start 2 processes on this machine:"
+  cat mpi_probe.log
+  exit 77
+fi
 
 python3 "$src/bench/decks/plate.py" plate --n 24 --cycles 300
 python3 "$src/bench/decks/plate.py" punch --n 24 --punch --cycles 700
