@@ -1,5 +1,6 @@
 #include "slave_share.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
@@ -24,11 +25,18 @@ void add(std::vector<SlaveArray>& a, std::vector<T>& v, std::size_t per_node) {
     add(a, v.data(), per_node);
 }
 
-// What the owner of a slave node alone updates and exchange_cycle does not carry.
+// What the owner of a slave node alone updates and exchange_cycle does not carry, or carries
+// only for the nodes whose force or books are not zero.
 std::vector<SlaveArray> owner_arrays(PassRuntime& pr) {
   PassState& st = pr.st;
   std::vector<SlaveArray> a;
   add(a, st.frame, 9);
+  add(a, st.seg, 1);
+  add(a, st.side, 1);
+  for (std::vector<double>* v : {&st.shape, &st.prev_shape})
+    add(a, *v, 4);
+  for (std::vector<double>* v : {&st.rs, &st.prev_rs})
+    add(a, *v, 3);
   for (std::vector<double>* v :
        {&st.gap, &st.slip_x, &st.slip_y, &st.temperature, &st.k_normal, &st.k_tangent, &st.m_eff,
         &st.arrival_depth, &st.pressure, &st.tau_x, &st.tau_y, &st.stored, &st.gap_jump,
@@ -43,7 +51,15 @@ std::vector<SlaveArray> owner_arrays(PassRuntime& pr) {
   return a;
 }
 
-constexpr std::size_t kCycleValues = 17;
+// A slave node's entry in a cycle's exchange: its place, segment, side, force, normal, surface
+// point, shape weights, work and surface book.
+constexpr std::size_t kCycleValues = 18;
+
+// Whether a value is anything but +0: a node whose force and books are all +0 needs no entry
+// (its receivers set +0 themselves, which sums as its owner's do, to the bit).
+bool carries(double v) {
+  return std::bit_cast<std::uint64_t>(v) != 0;
+}
 
 }  // namespace
 
@@ -69,52 +85,77 @@ void SlaveShare::exchange_cycle(std::vector<std::unique_ptr<SlaveShare>>& shares
   const comm::Communicator& comm = *shares.front()->comm_;
   const auto me = static_cast<std::size_t>(comm.rank());
   const auto ranks = static_cast<std::size_t>(comm.size());
-  thread_local std::vector<double> send, receive;
+  thread_local std::vector<double> send, receive, sizes;
+  // This rank's entries, pass by pass: the number of entries, then the entries. Only the nodes
+  // with a force or books: far from the tools most of a blank's nodes have neither.
   send.clear();
-  std::vector<std::size_t> per_rank(ranks, 0);
   for (std::size_t p = 0; p < passes.size(); ++p) {
     if (active[p] == 0)
       continue;
     const SlaveShare& sh = *shares[p];
     const PassState& st = passes[p]->st;
-    for (std::size_t r = 0; r < ranks; ++r)
-      per_rank[r] += kCycleValues * (sh.owned_start_[r + 1] - sh.owned_start_[r]);
+    const std::size_t count_at = send.size();
+    send.push_back(0.0);
+    std::size_t count = 0;
     for (std::size_t j = sh.owned_start_[me]; j < sh.owned_start_[me + 1]; ++j) {
       const std::size_t k = sh.owned_[j];
       const double* f = &st.force[3 * k];
+      if (!carries(f[0]) && !carries(f[1]) && !carries(f[2]) && !carries(st.work_part[k]) &&
+          !carries(st.surface_part[k]))
+        continue;
       const double* n = &st.frame[9 * k];
       const double* rs = &st.rs[3 * k];
       const double* w = &st.shape[4 * k];
-      send.insert(send.end(), {static_cast<double>(st.seg[k]), static_cast<double>(st.side[k]),
-                               f[0], f[1], f[2], n[0], n[1], n[2], rs[0], rs[1], rs[2], w[0], w[1],
-                               w[2], w[3], st.work_part[k], st.surface_part[k]});
+      send.insert(send.end(),
+                  {static_cast<double>(k), static_cast<double>(st.seg[k]),
+                   static_cast<double>(st.side[k]), f[0], f[1], f[2], n[0], n[1], n[2], rs[0],
+                   rs[1], rs[2], w[0], w[1], w[2], w[3], st.work_part[k], st.surface_part[k]});
+      ++count;
     }
+    send[count_at] = static_cast<double>(count);
   }
+  // How much each rank sends, then what.
+  sizes.resize(ranks);
+  const std::vector<std::size_t> one_each(ranks, 1);
+  const double mine = static_cast<double>(send.size());
+  comm.all_gather(std::span<const double>(&mine, 1), sizes, one_each);
+  std::vector<std::size_t> per_rank(ranks);
   std::size_t total = 0;
-  for (const std::size_t c : per_rank)
-    total += c;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    per_rank[r] = static_cast<std::size_t>(sizes[r]);
+    total += per_rank[r];
+  }
   receive.resize(total);
   comm.all_gather(send, receive, per_rank);
-  // Rank by rank, each rank's passes in order: as it packed them.
+  // The other ranks' nodes: +0 force and books, then their entries.
   std::size_t at = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
+    if (r == me) {
+      at += per_rank[r];
+      continue;
+    }
     for (std::size_t p = 0; p < passes.size(); ++p) {
       if (active[p] == 0)
         continue;
       const SlaveShare& sh = *shares[p];
       PassState& st = passes[p]->st;
-      for (std::size_t j = sh.owned_start_[r]; j < sh.owned_start_[r + 1];
-           ++j, at += kCycleValues) {
+      for (std::size_t j = sh.owned_start_[r]; j < sh.owned_start_[r + 1]; ++j) {
         const std::size_t k = sh.owned_[j];
+        st.force[3 * k] = st.force[3 * k + 1] = st.force[3 * k + 2] = 0.0;
+        st.work_part[k] = st.surface_part[k] = 0.0;
+      }
+      const auto count = static_cast<std::size_t>(receive[at++]);
+      for (std::size_t e = 0; e < count; ++e, at += kCycleValues) {
         const double* v = &receive[at];
-        st.seg[k] = static_cast<core::Index>(v[0]);
-        st.side[k] = static_cast<signed char>(v[1]);
-        std::copy_n(v + 2, 3, &st.force[3 * k]);
-        std::copy_n(v + 5, 3, &st.frame[9 * k]);
-        std::copy_n(v + 8, 3, &st.rs[3 * k]);
-        std::copy_n(v + 11, 4, &st.shape[4 * k]);
-        st.work_part[k] = v[15];
-        st.surface_part[k] = v[16];
+        const auto k = static_cast<std::size_t>(v[0]);
+        st.seg[k] = static_cast<core::Index>(v[1]);
+        st.side[k] = static_cast<signed char>(v[2]);
+        std::copy_n(v + 3, 3, &st.force[3 * k]);
+        std::copy_n(v + 6, 3, &st.frame[9 * k]);
+        std::copy_n(v + 9, 3, &st.rs[3 * k]);
+        std::copy_n(v + 12, 4, &st.shape[4 * k]);
+        st.work_part[k] = v[16];
+        st.surface_part[k] = v[17];
       }
     }
   }

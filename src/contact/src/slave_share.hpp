@@ -25,9 +25,11 @@ class SlaveShare {
   /// 1 for the slave nodes this rank handles.
   [[nodiscard]] const std::vector<unsigned char>& mine() const { return mine_; }
 
-  /// After the forces of every pass: every slave node's segment, side, force, normal, surface
+  /// After the forces of every pass: each slave node's segment, side, force, normal, surface
   /// point, shape weights and its step's work and surface book, from its owner to every rank,
-  /// for the passes marked `active` (the same on every rank), in one all-gather.
+  /// for the passes marked `active` (the same on every rank), in one all-gather. A node whose
+  /// force and books are +0 is not sent: the others set them to +0 (its segment, weights and
+  /// frame then wait for gather_state, as nothing but its owner reads them before).
   static void exchange_cycle(std::vector<std::unique_ptr<SlaveShare>>& shares,
                              std::vector<std::unique_ptr<PassRuntime>>& passes,
                              const std::vector<unsigned char>& active);
