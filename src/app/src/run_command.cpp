@@ -69,6 +69,33 @@ class NullBuffer final : public std::streambuf {
   int overflow(int c) override { return c; }
 };
 
+// Over several ranks: every rank's loop seconds and its timing table's seconds by group, for
+// summary.json's rank_timing (a collective: every rank calls it after its run).
+std::vector<output::RunSummary::RankTiming> rank_timing(const comm::Communicator& world,
+                                                        const engine::PassTiming& timing) {
+  static constexpr const char* kGroups[] = {"nodes",   "elements", "ranks", "contact",
+                                            "thermal", "outputs",  "other"};
+  constexpr std::size_t k = std::size(kGroups) + 1;
+  std::vector<double> mine(k, 0.0);
+  mine[0] = timing.loop_seconds;
+  for (const engine::PassTime& p : timing.passes) {
+    for (std::size_t g = 0; g < std::size(kGroups); ++g)
+      if (p.group == kGroups[g])
+        mine[g + 1] += p.seconds;
+  }
+  const auto ranks = static_cast<std::size_t>(world.size());
+  std::vector<double> all(k * ranks);
+  world.all_gather(mine, all, std::vector<std::size_t>(ranks, k));
+  std::vector<output::RunSummary::RankTiming> out(ranks);
+  for (std::size_t r = 0; r < ranks; ++r) {
+    out[r].rank = static_cast<int>(r);
+    out[r].loop_seconds = all[k * r];
+    for (std::size_t g = 0; g < std::size(kGroups); ++g)
+      out[r].groups.emplace_back(kGroups[g], all[k * r + g + 1]);
+  }
+  return out;
+}
+
 constexpr const char* untrusted_status = "completed, results not to be trusted";
 
 bool report(const std::vector<keyword::Diagnostic>& errors, std::ostream& err) {
@@ -170,6 +197,8 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
       resume.reset();  // the records are in the state now
     }
     result = simulation.run();
+    if (world.size() > 1)
+      summary.rank_timing = rank_timing(world, result.timing);
     if (files)
       files->finish();
   } catch (const core::StateError& e) {
@@ -272,6 +301,19 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
                result.checkpoints == 1 ? "" : "s", result.checkpoints, result.checkpoint);
   }
   print_timing(out, result.timing);
+  if (!summary.rank_timing.empty()) {
+    // The ranks' loops and exchanges side by side: the slower rank sets the pace, the others wait
+    // at the exchanges.
+    std::string loops, exchanges;
+    for (const output::RunSummary::RankTiming& r : summary.rank_timing) {
+      loops += fmt::format("{}{:.3g}", loops.empty() ? "" : " / ", r.loop_seconds);
+      for (const auto& [group, seconds] : r.groups)
+        if (group == "ranks")
+          exchanges += fmt::format("{}{:.3g}", exchanges.empty() ? "" : " / ", seconds);
+    }
+    fmt::print(out, "ranks: loop seconds {} (rank 0 first), of which exchanges {}\n", loops,
+               exchanges);
+  }
   fmt::print(out, "results in {}\n", outdir.string());
   if (!result.ok) {
     fmt::print(err, "error: {}\n", result.error);

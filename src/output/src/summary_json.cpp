@@ -198,7 +198,26 @@ std::string summary_json_text(const RunSummary& s) {
     append_number(out, s.loop_seconds > 0.0 ? x.seconds / s.loop_seconds : 0.0);
     out += i + 1 < s.timing.size() ? "}," : "}";
   }
-  out += s.timing.empty() ? "]}\n" : "\n  ]}\n";
+  out += s.timing.empty() ? "]},\n" : "\n  ]},\n";
+  key("rank_timing");
+  out += "[";
+  for (std::size_t i = 0; i < s.rank_timing.size(); ++i) {
+    const RunSummary::RankTiming& x = s.rank_timing[i];
+    out += "\n    {\"rank\": ";
+    out += std::to_string(x.rank);
+    out += ", \"loop_seconds\": ";
+    append_number(out, x.loop_seconds);
+    out += ", \"groups\": {";
+    for (std::size_t g = 0; g < x.groups.size(); ++g) {
+      out += json_string(x.groups[g].first);
+      out += ": ";
+      append_number(out, x.groups[g].second);
+      if (g + 1 < x.groups.size())
+        out += ", ";
+    }
+    out += i + 1 < s.rank_timing.size() ? "}}," : "}}";
+  }
+  out += s.rank_timing.empty() ? "]\n" : "\n  ]\n";
   out += "}\n";
   return out;
 }

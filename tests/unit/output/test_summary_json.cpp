@@ -261,6 +261,8 @@ RunSummary example_summary() {
   s.loop_seconds = 12.0;
   s.timing = {{"elements", "shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC", 9.0},
               {"other", "the loop's own checks, between the passes", 3.0}};
+  s.rank_timing = {{0, 12.0, {{"elements", 9.0}, {"ranks", 1.5}}},
+                   {1, 11.5, {{"elements", 10.0}, {"ranks", 0.25}}}};
   return s;
 }
 
@@ -298,7 +300,11 @@ TEST(SummaryJson, ExpectedText) {
   "timing": {"loop_seconds": 12, "passes": [
     {"group": "elements", "pass": "shells ELFORM 2 (Belytschko-Tsay), *MAT_ELASTIC", "seconds": 9, "share": 0.75},
     {"group": "other", "pass": "the loop's own checks, between the passes", "seconds": 3, "share": 0.25}
-  ]}
+  ]},
+  "rank_timing": [
+    {"rank": 0, "loop_seconds": 12, "groups": {"elements": 9, "ranks": 1.5}},
+    {"rank": 1, "loop_seconds": 11.5, "groups": {"elements": 10, "ranks": 0.25}}
+  ]
 }
 )";
   EXPECT_EQ(summary_json_text(example_summary()), expected);
@@ -322,6 +328,10 @@ TEST(SummaryJson, ParsesBackToTheSameValues) {
   ASSERT_EQ(passes.size(), 2u);
   EXPECT_EQ(std::get<std::string>(member(passes[1], "group").value), "other");
   EXPECT_EQ(std::get<double>(member(passes[0], "share").value), 0.75);
+  const auto& ranks = std::get<JsonArray>(member(doc, "rank_timing").value);
+  ASSERT_EQ(ranks.size(), 2u);
+  EXPECT_EQ(std::get<double>(member(ranks[1], "loop_seconds").value), 11.5);
+  EXPECT_EQ(std::get<double>(member(member(ranks[1], "groups"), "ranks").value), 0.25);
 }
 
 TEST(SummaryJson, ErrorStatusNonFiniteNumbersAndNoWarnings) {

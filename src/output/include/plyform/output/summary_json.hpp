@@ -60,6 +60,15 @@ struct RunSummary {
   };
   double loop_seconds = 0.0;
   std::vector<PassTime> timing;
+  /// Over several MPI ranks, each rank's loop and its seconds by group (the groups of `timing`:
+  /// nodes, elements, ranks (the exchanges), contact, thermal, outputs, other), written as
+  /// `"rank_timing": [{"rank": ..., "loop_seconds": ..., "groups": {...}}]`; empty on one rank.
+  struct RankTiming {
+    int rank = 0;
+    double loop_seconds = 0.0;
+    std::vector<std::pair<std::string, double>> groups;
+  };
+  std::vector<RankTiming> rank_timing;
 };
 
 /// The JSON text of a summary (an object, two-space indentation, ending with a newline).
