@@ -1,18 +1,22 @@
 #pragma once
 // A run over several MPI ranks (docs/parallel.md), as built today: every rank holds the whole
-// model and state and runs every pass but the element loop as one rank would; the element loop
-// is shared out. A node's forces are complete on the rank that owns it (the split's owner,
+// model and state; the element loop is shared out here, the contact's work per slave node by
+// contact::ContactSet::share_slaves, and every other pass runs on every rank as one rank would.
+// A node's forces are complete on the rank that owns it (the split's owner,
 // domain::Decomposition), which computes every element around it: its own domain's and, once
 // more, those of its neighbours that touch its nodes. The owners then hand their nodes' forces,
-// moments and plastic work to every rank, and each element's books and thickness go from one of
-// the ranks that computed it (the lowest owner among its nodes) to every rank.
+// moments and plastic work to every rank; each work item's books come whole from the rank that
+// computed all of it, or as its elements' shares from the ranks that report them (the lowest
+// owner among an element's nodes), with the shells' thickness where the contact or the heat
+// reads it.
 //
 // Why the results do not depend on the rank count, bit for bit: within one colour of a block no
 // two elements share a node, so a node receives one contribution per colour and sums them in the
-// colours' order, whichever rank computed them and in whatever order within the colour; each
-// work item's books are summed again from its elements' shares (element::ElementBooks) in the
-// item's order; the smallest step and the first failure are chosen by value, then by place in
-// the loop. Every other pass runs on the same numbers on every rank.
+// colours' order, whichever rank computed them and in whatever order within the colour; a work
+// item's books are those its kernel call sums on one rank, or summed again from its elements'
+// shares (element::ElementBooks) in the item's order; the smallest step and the first failure
+// are chosen by value, then by place in the loop. Every other pass runs on the same numbers on
+// every rank.
 
 #include <cstddef>
 #include <span>
