@@ -3,7 +3,8 @@
 # every sum in the same order whatever the rank count). Not a comparison with an earlier output:
 # the property itself, on the model kinds whose passes differ (shells with J2, a rigid punch's
 # contact, the three-layer cup's cohesive interfaces, the hot draw's heat and contacts, a solid
-# block, the DCB's cohesive strip), and a run stopped on 2 ranks and restarted on 2 and on 1 (the
+# block, the DCB's cohesive strip); an instability on 3 ranks (the diagnosis, the exit code and
+# the files of the run on one); and a run stopped on 2 ranks and restarted on 2 and on 1 (the
 # files those of the uninterrupted run on one rank).
 #
 #   rank_identity.sh PLYFORM WORKDIR
@@ -69,6 +70,34 @@ for model in plate/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k 
   done
   echo "$name: 1, 2, 3 and 4 ranks compared"
 done
+
+# An instability (the solid block's top face driven 100 times too far: its energy leaves the
+# band): on 3 ranks the run stops where the run on one rank stops, with its diagnosis and its
+# exit code 3, and no rank waits for the others.
+mkdir -p unstable
+sed '/^\$     LCID      SIDR       SFA       SFO/{n;s/.*/         1         0       1.0     100.0/}' \
+  block/solid_block.k > unstable/solid_block.k
+for np in 1 3; do
+  code=0
+  if [[ $np == 1 ]]; then
+    "$plyform" run unstable/solid_block.k -o unstable.$np > unstable.$np.out 2> unstable.$np.err ||
+      code=$?
+  else
+    mpirun -np $np "$plyform" run unstable/solid_block.k -o unstable.$np > unstable.$np.out \
+      2> unstable.$np.err || code=$?
+  fi
+  [[ $code != 0 ]] || { echo "FAIL: the unstable block ran to its end on $np rank(s)"; failed=1; }
+done
+grep "^error" unstable.1.err > unstable.1.diagnosis || true
+grep "^error" unstable.3.err > unstable.3.diagnosis || true
+if [[ ! -s unstable.1.diagnosis ]] || ! cmp -s unstable.1.diagnosis unstable.3.diagnosis; then
+  echo "FAIL: the diagnosis on 3 ranks is not the one on 1:"
+  cat unstable.1.diagnosis unstable.3.diagnosis
+  failed=1
+fi
+grep -q "Exit code: *3" unstable.3.err || { echo "FAIL: the ranks did not exit 3"; failed=1; }
+same_files unstable.1 unstable.3
+echo "an instability on 1 and 3 ranks compared: $(cut -c1-80 unstable.1.diagnosis)"
 
 # Restart on 2 ranks: a run stopped by SIGTERM sent to one of its ranks (every rank stops at the
 # same cycle and the first writes the checkpoint), then continued on 2 ranks, and on 1: the files
