@@ -49,6 +49,8 @@ TEST(CheckRanks, PrintsEachDomainAndTheSplitsFigures) {
     EXPECT_NE(text.find(row), std::string::npos) << row << " missing in\n" << text;
   EXPECT_NE(text.find("\n      mean         64 "), std::string::npos) << text;
   EXPECT_NE(text.find("contact slave nodes: 81 over 1 interface\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("run it so: mpirun -np 2 plyform run DECK -o OUTDIR"), std::string::npos)
+      << text;
 }
 
 TEST(CheckRanks, WithoutRanksItPrintsNoSplit) {

@@ -76,6 +76,12 @@ void print_decomposition(const core::Model& model, const domain::Decomposition& 
                    static_cast<double>(d.interface_edges));
   fmt::print(out, "  contact slave nodes: {} over {} interface{}\n", slave_total, d.contact.size(),
              d.contact.size() == 1 ? "" : "s");
+  // What a run over these ranks does with the split today (docs/parallel.md).
+  fmt::print(out,
+             "  run it so: mpirun -np {} plyform run DECK -o OUTDIR (the element loop and the "
+             "contact's slave nodes by these domains; every rank holds the whole model; the "
+             "files are those of one rank)\n",
+             d.domains);
 }
 
 }  // namespace plyform::app
