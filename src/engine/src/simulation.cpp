@@ -236,7 +236,8 @@ struct Simulation::State {
   std::optional<RankExchange> ranks;
   std::vector<std::vector<ItemResult>> piece_results;
   std::vector<std::vector<RangeBooks>> piece_books;
-  long element_state_cycle = -1;  // the cycle whose element states were last gathered
+  std::vector<double*> exchanged_fields;  // what the owners hand to every rank after the loop
+  long element_state_cycle = -1;          // the cycle whose element states were last gathered
   InternalResult elements_result;
   double bad_velocities = 0.0;
   std::vector<std::array<double, 3>> free_velocity;
@@ -577,6 +578,12 @@ void Simulation::State::set_up_run() {
       contact->share_slaves(*options.ranks, options.node_owner);
     piece_results.resize(phases.size());
     piece_books.resize(phases.size());
+    // The nodal arrays the element loop adds to (their storage is fixed for the run).
+    exchanged_fields = {s.fx.data(), s.fy.data(), s.fz.data()};
+    if (rotations)
+      exchanged_fields.insert(exchanged_fields.end(), {s.mx.data(), s.my.data(), s.mz.data()});
+    if (!plastic_work.empty())
+      exchanged_fields.push_back(plastic_work.data());
   }
   set_up = true;
 }
@@ -811,12 +818,7 @@ void Simulation::State::internal_on_ranks(double dt_step) {
   }
   // The exchange is its own pass in the timing table: its seconds leave the element loop's.
   core::Stopwatch exchange_clock;
-  std::vector<double*> fields = {s.fx.data(), s.fy.data(), s.fz.data()};
-  if (rotations)
-    fields.insert(fields.end(), {s.mx.data(), s.my.data(), s.mz.data()});
-  if (!plastic_work.empty())
-    fields.push_back(plastic_work.data());
-  ranks->gather_nodes(fields);
+  ranks->gather_nodes(exchanged_fields);
   for (std::size_t p = 0; p < phases.size(); ++p) {
     piece_books[p].resize(pieces[p].size());
     for (std::size_t w = 0; w < pieces[p].size(); ++w) {
