@@ -24,6 +24,24 @@ int main(int argc, char** argv) {
       ->add_option("--threads", run.threads,
                    "OpenMP threads (default: the deck's *CONTROL_PARALLEL NCPU, else 1)")
       ->check(CLI::Range(1, 1024));
+  std::string rebalance = "auto";
+  run_cmd
+      ->add_option("--rebalance", rebalance,
+                   "over several MPI ranks: split the model again while running when the ranks "
+                   "wait for each other long enough to pay for it (auto, the default), never "
+                   "(off), or every N cycles or so (N, for studies)")
+      ->check([](const std::string& v) -> std::string {
+        if (v == "auto" || v == "off")
+          return {};
+        try {
+          std::size_t used = 0;
+          const long n = std::stol(v, &used);
+          if (used == v.size() && n > 0)
+            return {};
+        } catch (const std::exception&) {
+        }
+        return "expected auto, off or a positive number of cycles, got '" + v + "'";
+      });
   run_cmd->add_flag("--restart", run.restart,
                     "continue from the checkpoint in OUTDIR (OUTDIR/d3dump: "
                     "*DATABASE_BINARY_D3DUMP, or written when a run was stopped by a signal)");
@@ -151,6 +169,7 @@ int main(int argc, char** argv) {
       run.output = run_output;
     if (*end_opt)
       run.end_time = end_time;
+    run.rebalance_every = rebalance == "auto" ? 0 : rebalance == "off" ? -1 : std::stol(rebalance);
     return plyform::app::run_deck(run, std::cout, std::cerr);
   }
   if (check->parsed())

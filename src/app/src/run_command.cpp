@@ -3,15 +3,19 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <cmath>
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <ostream>
 
 #include "plyform/app/commands.hpp"
 #include "plyform/comm/communicator.hpp"
+#include "plyform/core/stopwatch.hpp"
 #include "plyform/domain/decomposition.hpp"
+#include "plyform/domain/resplit.hpp"
 #include "plyform/engine/checkpoint_file.hpp"
 #include "plyform/engine/solver.hpp"
 #include "plyform/keyword/read_deck.hpp"
@@ -157,6 +161,7 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
   engine::SolverOptions so;
   so.ranks = &world;
   if (world.size() > 1) {
+    core::Stopwatch split_clock;
     const domain::DecomposeResult split = domain::decompose(model, world.size());
     if (!split.error.empty()) {
       fmt::print(err, "error: cannot run {} over {} ranks: {}\n", options.deck.string(),
@@ -164,6 +169,23 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
       return 1;
     }
     so.node_owner = split.decomposition.node_owner;
+    // Re-balancing (docs/parallel.md): the element graph kept for the splits to come; the first
+    // split's costs and time (the price of a split until one is measured; the largest over the
+    // ranks, so that every rank decides alike).
+    so.rebalance_every = options.rebalance_every;
+    if (options.rebalance_every >= 0) {
+      // The graph is built at the first re-split (most runs never need one).
+      auto splitter = std::make_shared<std::unique_ptr<domain::Resplitter>>();
+      so.resplit = [splitter, &model](std::span<const double> shares) {
+        if (!*splitter)
+          *splitter = std::make_unique<domain::Resplitter>(model);
+        return (*splitter)->split(shares);
+      };
+      for (const domain::DomainSummary& d : split.decomposition.summary)
+        so.rank_cost.push_back(d.cost);
+      so.split_seconds =
+          static_cast<double>(world.max(std::lround(1e6 * split_clock.lap()))) * 1e-6;
+    }
   }
   output::RunSummary summary;
   summary.deck = options.deck.string();
@@ -197,8 +219,11 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
       resume.reset();  // the records are in the state now
     }
     result = simulation.run();
-    if (world.size() > 1)
+    if (world.size() > 1) {
       summary.rank_timing = rank_timing(world, result.timing);
+      summary.rebalancing = {result.resplits, result.rank_shares, result.first_imbalance,
+                             result.last_imbalance};
+    }
     if (files)
       files->finish();
   } catch (const core::StateError& e) {
@@ -313,6 +338,21 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
     }
     fmt::print(out, "ranks: loop seconds {} (rank 0 first), of which exchanges {}\n", loops,
                exchanges);
+    const output::RunSummary::Rebalancing& b = summary.rebalancing;
+    if (b.splits > 0) {
+      std::string shares;
+      for (const double x : b.shares)
+        shares += fmt::format("{}{:.3f}", shares.empty() ? "" : " / ", x);
+      fmt::print(out,
+                 "ranks: split again {} time{} while running (each rank's share of the estimated "
+                 "cost now {}; the ranks' seconds' imbalance {:.3f} at the first look, {:.3f} at "
+                 "the last)\n",
+                 b.splits, b.splits == 1 ? "" : "s", shares, b.first_imbalance, b.last_imbalance);
+    } else if (b.last_imbalance > 0.0) {
+      fmt::print(out,
+                 "ranks: the split held (the ranks' seconds' imbalance {:.3f} at the last look)\n",
+                 b.last_imbalance);
+    }
   }
   fmt::print(out, "results in {}\n", outdir.string());
   if (!result.ok) {

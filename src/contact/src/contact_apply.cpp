@@ -61,7 +61,10 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
     pr.seconds[0] += clock.lap();
 
-    measure(pr, dt, packed, temperature, mass_, rigid_, rot_);
+    measure_surfaces(pr, dt, packed);
+    double lap = clock.lap();
+    pr.seconds[1] += lap;
+    measure_slaves(pr, dt, packed, temperature, mass_, rigid_, rot_);
     pr.st.measured = true;
     if (!pr.st.tie_state.empty()) {
       // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
@@ -78,7 +81,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
         pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
       }
     }
-    pr.seconds[1] += clock.lap();
+    lap = clock.lap();
+    pr.seconds[1] += lap;
+    shared_seconds_ += lap;
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.st.gap.data();
@@ -130,7 +135,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       }
     }
 
-    pr.seconds[2] += clock.lap();
+    lap = clock.lap();
+    pr.seconds[2] += lap;
+    shared_seconds_ += lap;
     // Forces from the tractions, and the second half of the step's work.
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
@@ -158,7 +165,9 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
       pr.st.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
       pr.st.work_part[k] += 0.5 * dt * pr.st.end_power[k];
     }
-    pr.seconds[3] += clock.lap();
+    lap = clock.lap();
+    pr.seconds[3] += lap;
+    shared_seconds_ += lap;
     active_[ip] = 1;
   }
 

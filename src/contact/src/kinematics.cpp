@@ -88,15 +88,25 @@ void leave_master_pressed(PassRuntime& pr, std::size_t k) {
 // half of the step's contact work with last cycle's forces. Fills the arrays.
 void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
              const std::vector<double>& mass, const unsigned char* rigid, const Rotations& rot) {
-  const core::ContactPass& cp = *pr.pass;
-  const std::size_t ns = cp.slave_count();
-  const law::BatchHistory& h = pr.hist;
+  measure_surfaces(pr, dt, packed);
+  measure_slaves(pr, dt, packed, temperature, mass, rigid, rot);
+}
+
+void measure_surfaces(PassRuntime& pr, double dt, const double* packed) {
   pr.st.seg_normal_current = pr.master_offsets && dt > 0.0;
   if (pr.st.seg_normal_current)
     update_master_normals(pr, packed);
-  if (!cp.slave_face_start.empty() && dt > 0.0)
+  if (!pr.pass->slave_face_start.empty() && dt > 0.0)
     update_slave_normals(pr, packed);
   update_folds(pr, packed);
+}
+
+void measure_slaves(PassRuntime& pr, double dt, const double* packed, const double* temperature,
+                    const std::vector<double>& mass, const unsigned char* rigid,
+                    const Rotations& rot) {
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t ns = cp.slave_count();
+  const law::BatchHistory& h = pr.hist;
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);

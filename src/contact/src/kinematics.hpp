@@ -13,5 +13,11 @@ namespace plyform::contact {
 /// measure at t = 0, before any step).
 void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
              const std::vector<double>& mass, const unsigned char* rigid, const Rotations& rot);
+/// measure()'s two stages. The surfaces' normals and folds, whole on every rank:
+void measure_surfaces(PassRuntime& pr, double dt, const double* packed);
+/// and the slave nodes' kinematics, over several ranks each rank's own (pr.mine).
+void measure_slaves(PassRuntime& pr, double dt, const double* packed, const double* temperature,
+                    const std::vector<double>& mass, const unsigned char* rigid,
+                    const Rotations& rot);
 
 }  // namespace plyform::contact

@@ -1,44 +1,15 @@
-#include <metis.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
 
 #include "element_graph.hpp"
+#include "metis_split.hpp"
 #include "plyform/domain/decomposition.hpp"
 
 namespace plyform::domain {
 
 namespace {
-
-static_assert(sizeof(idx_t) == sizeof(std::int32_t), "plyform passes METIS 32-bit indices");
-
-// METIS's k-way split of the weighted graph into `domains` parts (fixed seed: the same model gives
-// the same split on every machine that has the same METIS).
-std::string split(detail::ElementGraph& g, int domains, std::vector<int>& part) {
-  const std::size_t ne = g.elements.size();
-  part.assign(ne, 0);
-  if (domains == 1)
-    return {};
-  std::vector<idx_t> vwgt(ne);
-  for (std::size_t e = 0; e < ne; ++e)
-    vwgt[e] = std::max<idx_t>(1, static_cast<idx_t>(std::lround(100.0 * g.cost[e])));
-  idx_t nvtxs = static_cast<idx_t>(ne), ncon = 1, nparts = domains, objval = 0;
-  idx_t options[METIS_NOPTIONS];
-  METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_SEED] = 1;
-  options[METIS_OPTION_NUMBERING] = 0;
-  std::vector<idx_t> where(ne, 0);
-  const int status = METIS_PartGraphKway(&nvtxs, &ncon, g.xadj.data(), g.adjncy.data(), vwgt.data(),
-                                         nullptr, g.adjwgt.data(), &nparts, nullptr, nullptr,
-                                         options, &objval, where.data());
-  if (status != METIS_OK)
-    return "METIS could not split the element graph (status " + std::to_string(status) + ")";
-  for (std::size_t e = 0; e < ne; ++e)
-    part[e] = static_cast<int>(where[e]);
-  return {};
-}
 
 // Every node's domains, its owner (the lowest) and each domain's node counts.
 void own_nodes(const core::Model& m, const detail::ElementGraph& g, Decomposition& d) {
@@ -136,7 +107,7 @@ DecomposeResult decompose(const core::Model& model, int domains) {
   }
   Decomposition& d = r.decomposition;
   d.domains = domains;
-  r.error = split(g, domains, d.element_domain);
+  r.error = detail::metis_split(g, domains, {}, d.element_domain);
   if (!r.error.empty())
     return r;
   d.elements = g.elements;

@@ -28,6 +28,7 @@
 #include "plyform/engine/solver.hpp"
 #include "plyform/engine/thread_governor.hpp"
 #include "plyform/material/law_registry.hpp"
+#include "rank_balance.hpp"
 #include "rank_exchange.hpp"
 #include "tied_nodes.hpp"
 #include "work_items.hpp"
@@ -238,6 +239,10 @@ struct Simulation::State {
   std::vector<std::vector<RangeBooks>> piece_books;
   std::vector<double*> exchanged_fields;  // what the owners hand to every rank after the loop
   long element_state_cycle = -1;          // the cycle whose element states were last gathered
+  // Re-balancing (rank_balance.hpp): the policy; this rank's seconds in its element pieces, and
+  // its shared work's at the last look; what its last split took.
+  std::optional<RankBalance> balance;
+  double piece_seconds = 0.0, shared_at_look = 0.0, split_took = 0.0;
   InternalResult elements_result;
   double bad_velocities = 0.0;
   std::vector<std::array<double, 3>> free_velocity;
@@ -283,6 +288,7 @@ struct Simulation::State {
   void pack();
   void internal(double dt_step);
   void internal_on_ranks(double dt_step);
+  void rebalance();
   ItemResult run_item(const WorkItem& it, double dt_step, const element::NodalForces& forces,
                       const element::NodalMoments& moments, const element::NodalSpin& spin);
   void book_item(const WorkItem& it, const ItemResult& x, InternalResult& r);
@@ -584,6 +590,10 @@ void Simulation::State::set_up_run() {
       exchanged_fields.insert(exchanged_fields.end(), {s.mx.data(), s.my.data(), s.mz.data()});
     if (!plastic_work.empty())
       exchanged_fields.push_back(plastic_work.data());
+    if (options.resplit &&
+        options.rank_cost.size() == static_cast<std::size_t>(options.ranks->size()) &&
+        options.rebalance_every >= 0)
+      balance.emplace(options.rank_cost, options.split_seconds, options.rebalance_every);
   }
   set_up = true;
 }
@@ -777,6 +787,7 @@ void Simulation::State::internal_on_ranks(double dt_step) {
   const auto& pieces = ranks->pieces();
   for (std::size_t p = 0; p < phases.size(); ++p)
     piece_results[p].resize(pieces[p].size());
+  core::Stopwatch pieces_clock;
 #pragma omp parallel proc_bind(close)
   {
     for (std::size_t p = 0; p < phases.size(); ++p) {
@@ -795,6 +806,7 @@ void Simulation::State::internal_on_ranks(double dt_step) {
       }
     }
   }
+  piece_seconds += pieces_clock.lap();
   // This rank's smallest step and first failure, in the loop's order.
   RankElementReport mine;
   for (std::size_t p = 0; p < phases.size(); ++p) {
@@ -860,6 +872,48 @@ void Simulation::State::internal_on_ranks(double dt_step) {
     }
   }
   elements_result = r;
+}
+
+// Over several ranks, every few cycles: the ranks compare the seconds each spent on its share
+// (its element pieces and contact slave nodes) and split the model again when the waiting pays
+// for it (rank_balance.hpp). Every rank first receives the whole state, as before a checkpoint;
+// then the element loop and the contact's slave nodes are shared out by the new split. The same
+// decision on every rank: it is made from the same exchanged numbers.
+void Simulation::State::rebalance() {
+  if (!balance || cycle % RankBalance::kLookCycles != 0)
+    return;
+  const comm::Communicator& comm = *options.ranks;
+  const auto size = static_cast<std::size_t>(comm.size());
+  const double shared = piece_seconds + (contact ? contact->shared_seconds() : 0.0);
+  const std::array<double, 2> mine{shared - shared_at_look, split_took};
+  shared_at_look = shared;
+  std::vector<double> all(2 * size);
+  comm.all_gather(mine, all, std::vector<std::size_t>(size, 2));
+  std::vector<double> seconds(size);
+  double price = 0.0;
+  for (std::size_t r = 0; r < size; ++r) {
+    seconds[r] = all[2 * r];
+    price = std::max(price, all[2 * r + 1]);
+  }
+  if (price > 0.0)
+    balance->set_price(price);
+  const std::vector<double> shares = balance->look(seconds, cycle);
+  if (shares.empty())
+    return;
+  core::Stopwatch took;
+  gather_element_state();
+  const domain::OwnerSplit split = options.resplit(shares);
+  if (!split.error.empty()) {
+    balance.reset();  // the first split stays (the same error on every rank)
+    res.warnings.push_back("the ranks' work could not be split again (" + split.error +
+                           "); the first split stays");
+    return;
+  }
+  ranks.emplace(model, phases, split.node_owner, comm);
+  if (contact)
+    contact->share_slaves(comm, split.node_owner);
+  split_took = took.lap();
+  balance->split_done(split.cost, cycle);
 }
 
 // Over several ranks, every element's state from the rank that reported it (and every contact slave
@@ -1961,6 +2015,10 @@ RunResult Simulation::run() {
     st.sink.progress(st.t, st.end_time, st.cycle, st.dt, st.wall_before + st.wall());
     st.governor.tick();
     st.clock.add(Pass::outputs, watch.lap());
+    if (st.balance) {
+      st.rebalance();
+      st.clock.add(Pass::exchange, watch.lap());
+    }
     bool stop = st.options.stop != nullptr && *st.options.stop != 0;
     if (st.ranks)  // a signal reaches the ranks at different cycles: all stop at the same one
       stop = st.options.ranks->max(stop ? 1L : 0L) != 0;
@@ -1994,6 +2052,12 @@ RunResult Simulation::run() {
       else
         st.write_checkpoint(st.end_records);
     }
+  }
+  if (st.balance) {
+    res.resplits = st.balance->splits();
+    res.rank_shares = st.balance->shares();
+    res.first_imbalance = st.balance->first_imbalance();
+    res.last_imbalance = st.balance->last_imbalance();
   }
   res.cycles = st.cycle;
   res.time = st.t;

@@ -150,6 +150,17 @@ std::string summary_json_text(const RunSummary& s) {
   integer("deformable_elements", s.deformable_elements);
   integer("threads", s.threads);
   integer("ranks", s.ranks);
+  key("rebalancing");
+  fmt::format_to(std::back_inserter(out), "{{\"splits\": {}, \"shares\": [", s.rebalancing.splits);
+  for (std::size_t i = 0; i < s.rebalancing.shares.size(); ++i) {
+    out += i > 0 ? ", " : "";
+    append_number(out, s.rebalancing.shares[i]);
+  }
+  out += "], \"first_imbalance\": ";
+  append_number(out, s.rebalancing.first_imbalance);
+  out += ", \"last_imbalance\": ";
+  append_number(out, s.rebalancing.last_imbalance);
+  out += "},\n";
   real("restarted_at", s.restarted_at);
   text("checkpoint", s.checkpoint);
   integer("thermal_steps", s.thermal_steps);

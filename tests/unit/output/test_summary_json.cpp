@@ -263,6 +263,7 @@ RunSummary example_summary() {
               {"other", "the loop's own checks, between the passes", 3.0}};
   s.rank_timing = {{0, 12.0, {{"elements", 9.0}, {"ranks", 1.5}}},
                    {1, 11.5, {{"elements", 10.0}, {"ranks", 0.25}}}};
+  s.rebalancing = {2, {0.375, 0.625}, 1.25, 1.0};
   return s;
 }
 
@@ -286,6 +287,7 @@ TEST(SummaryJson, ExpectedText) {
   "deformable_elements": 700,
   "threads": 2,
   "ranks": 3,
+  "rebalancing": {"splits": 2, "shares": [0.375, 0.625], "first_imbalance": 1.25, "last_imbalance": 1},
   "restarted_at": null,
   "checkpoint": "",
   "thermal_steps": 0,
@@ -332,6 +334,9 @@ TEST(SummaryJson, ParsesBackToTheSameValues) {
   ASSERT_EQ(ranks.size(), 2u);
   EXPECT_EQ(std::get<double>(member(ranks[1], "loop_seconds").value), 11.5);
   EXPECT_EQ(std::get<double>(member(member(ranks[1], "groups"), "ranks").value), 0.25);
+  const auto& rebalancing = member(doc, "rebalancing");
+  EXPECT_EQ(std::get<double>(member(rebalancing, "splits").value), 2.0);
+  EXPECT_EQ(std::get<double>(member(rebalancing, "first_imbalance").value), 1.25);
 }
 
 TEST(SummaryJson, ErrorStatusNonFiniteNumbersAndNoWarnings) {

@@ -54,9 +54,13 @@ struct RunOptions {
   bool progress = true;  ///< a progress line when standard output is a terminal
   bool restart = false;  ///< continue from OUTDIR/d3dump
   std::optional<double> end_time;  ///< replaces the deck's ENDTIM
+  /// --rebalance over several ranks: 0 (auto) splits again when it pays, -1 (off) never, N > 0
+  /// every N cycles or so (engine::SolverOptions::rebalance_every).
+  long rebalance_every = 0;
 };
 
-/// `plyform run DECK.k [-o OUTDIR] [--threads N] [--restart] [--end-time T]`: 0 normal
+/// `plyform run DECK.k [-o OUTDIR] [--threads N] [--restart] [--end-time T] [--rebalance M]`:
+/// 0 normal
 /// termination, 1 deck errors or a checkpoint refused (--restart), 2 output errors, 3 the run
 /// stopped (instability) with the results written so far, 4 stopped by SIGINT or SIGTERM
 /// after writing a checkpoint (continue with --restart), 5 completed with books that broke

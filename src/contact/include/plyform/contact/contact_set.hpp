@@ -164,6 +164,9 @@ class ContactSet {
   [[nodiscard]] std::size_t slave_count() const;
   /// Over several ranks, the wall seconds of apply()'s exchange of the slave nodes' forces.
   [[nodiscard]] double exchange_seconds() const { return exchange_seconds_; }
+  /// The wall seconds of apply()'s work per slave node (kinematics, law, forces): the part
+  /// that over several ranks each rank runs for its own slave nodes (the re-balancing weighs it).
+  [[nodiscard]] double shared_seconds() const { return shared_seconds_; }
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }
   /// Each interface's wall seconds in apply() by stage, in the model's order.
@@ -199,6 +202,7 @@ class ContactSet {
   std::vector<std::unique_ptr<SlaveShare>> shares_;
   std::vector<unsigned char> active_;  // apply(): the passes in their birth-death window
   double exchange_seconds_ = 0.0;      // apply()'s exchange over the ranks
+  double shared_seconds_ = 0.0;        // apply()'s work per slave node (shared_seconds())
   long applies_ = 0;
   long gathered_at_ = 0;
 };

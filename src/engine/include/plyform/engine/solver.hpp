@@ -7,8 +7,10 @@
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "plyform/contact/contact_set.hpp"
 #include "plyform/core/model.hpp"
 #include "plyform/core/state_archive.hpp"
+#include "plyform/domain/resplit.hpp"
 #include "plyform/element/shell_kernels.hpp"
 #include "plyform/element/solid_kernels.hpp"
 #include "plyform/engine/nodal_state.hpp"
@@ -139,6 +142,14 @@ struct SolverOptions {
   /// them, or on one rank, the run is this process's alone.
   const comm::Communicator* ranks = nullptr;
   std::vector<int> node_owner;
+  /// Re-balancing over the ranks (rank_balance.hpp): each rank's share of the first split's
+  /// estimated cost and the seconds that split took; a new split for given target shares
+  /// (unset: the first split stays); 0 splits again when it pays, N > 0 every N cycles or so
+  /// whatever the imbalance (`--rebalance N`), -1 never (`--rebalance off`).
+  std::vector<double> rank_cost;
+  double split_seconds = 0.0;
+  std::function<domain::OwnerSplit(std::span<const double>)> resplit;
+  long rebalance_every = 0;
 };
 
 struct RunResult {
@@ -162,6 +173,12 @@ struct RunResult {
   /// and the wall seconds it ran so.
   int thread_reductions = 0;
   double reduced_thread_seconds = 0.0;
+  /// Over several ranks: how often the model was split again while running, each rank's share
+  /// of the estimated cost in the last split, and the imbalance of the ranks' seconds (the
+  /// slowest over the mean) at the first and the last look (rank_balance.hpp; 0: no look).
+  int resplits = 0;
+  std::vector<double> rank_shares;
+  double first_imbalance = 0.0, last_imbalance = 0.0;
   /// Stopped on request (SolverOptions::stop) before the end time; a checkpoint was written.
   bool stopped = false;
   int checkpoints = 0;     ///< checkpoints written by this run

@@ -31,6 +31,17 @@ struct RunSummary {
   long deformable_elements = 0;  ///< what element_cycles_per_second counts
   int threads = 1;
   int ranks = 1;  ///< MPI ranks (docs/parallel.md)
+  /// Over several ranks, the re-balancing (docs/parallel.md): how often the model was split
+  /// again while running, each rank's share of the estimated cost in the last split (empty:
+  /// the first split), and the imbalance of the ranks' seconds at the first and the last look
+  /// (0: none). Written as `"rebalancing": {"splits": ..., "shares": [...], "first_imbalance":
+  /// ..., "last_imbalance": ...}`.
+  struct Rebalancing {
+    int splits = 0;
+    std::vector<double> shares;
+    double first_imbalance = 0.0, last_imbalance = 0.0;
+  };
+  Rebalancing rebalancing;
   /// A restart: the time it continued from (NaN, written null: the run started at t = 0). The
   /// other fields cover the whole run, its parts before the restart included.
   double restarted_at = std::numeric_limits<double>::quiet_NaN();
