@@ -12,6 +12,7 @@
 #include "plyform/core/stopwatch.hpp"
 #include "slave_share.hpp"
 #include "surface_geometry.hpp"
+#include "surface_reads.hpp"
 
 namespace plyform::contact {
 
@@ -61,6 +62,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
     pr.seconds[0] += clock.lap();
 
+    find_surface_reads(pr, rot_.inertia != nullptr);
     measure_surfaces(pr, dt, packed);
     double lap = clock.lap();
     pr.seconds[1] += lap;

@@ -176,6 +176,23 @@ struct PassRuntime {
   std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
   bool folds_fixed = false;
   std::vector<double> chunk_sums;  // buffer of chunked_sum
+  /// The parts of the surfaces this cycle's kinematics read (surface_reads.hpp), so that only
+  /// those normals, folds and centroids are computed; `all`: every one is.
+  struct SurfaceReads {
+    bool all = true;
+    long looks = 0, whole_until = 0;     // find_surface_reads() calls; lists again from this one
+    std::vector<core::Index> segs;       // segments whose normal is computed (the master's)
+    std::vector<core::Index> nodes;      // master nodes whose nodal normal is computed
+    std::vector<core::Index> folds;      // segments whose fold is tested
+    std::vector<core::Index> centroids;  // segments whose centroid is computed
+    std::vector<core::Index> slaves;     // slave nodes whose normal is computed
+    std::vector<core::Index> faces;      // slave faces whose normal is computed
+    std::vector<core::Index> near;       // the segments the slave nodes' kinematics project on
+    // Per item, the last look that listed it (a look's lists without clearing the marks).
+    std::vector<std::uint32_t> near_mark, seg_mark, fold_mark, centroid_mark, node_mark, slave_mark,
+        face_mark;
+    std::uint32_t mark = 0;
+  } reads;
 
   [[nodiscard]] TieArrays ties() { return {st.tie_state.data(), st.tie_gap0.data()}; }
 

@@ -8,7 +8,9 @@
 
 #include "pass_runtime.hpp"
 #include "plyform/contact/segment_projection.hpp"
+#include "plyform/core/invariant.hpp"
 #include "surface_geometry.hpp"
+#include "surface_normals.hpp"
 
 namespace plyform::contact {
 
@@ -36,6 +38,8 @@ inline void project_surface(const PassRuntime& pr, std::size_t k, core::Index s,
   const double om = pr.st.seg_offset[su];
   const double os = pr.st.slave_offset[k];
   const double* dir = &pr.st.slave_normal[3 * k];
+  PLYFORM_INVARIANT(std::isfinite(dir[0] + dir[1] + dir[2]),
+                    "a slave node's normal computed this cycle (surface_reads.hpp)");
   const bool along_normal = os > 0.0 && (dir[0] != 0.0 || dir[1] != 0.0 || dir[2] != 0.0);
   if (along_normal) {
     // Towards the master: against the contact normal (side times the segment's normal).
@@ -152,6 +156,8 @@ inline Located project_on(const PassRuntime& pr, std::size_t k, core::Index s, b
 // either way. Without faces (a node set), 0.
 inline double facing(const PassRuntime& pr, std::size_t k, const Located& L) {
   const double* own = &pr.st.slave_normal[3 * k];
+  PLYFORM_INVARIANT(std::isfinite(own[0] + own[1] + own[2]),
+                    "a slave node's normal computed this cycle (surface_reads.hpp)");
   const double f =
       L.side * (own[0] * L.sp.normal[0] + own[1] * L.sp.normal[1] + own[2] * L.sp.normal[2]);
   return pr.st.slave_offset[k] > 0.0 ? -std::fabs(f) : f;
@@ -218,6 +224,8 @@ constexpr double kEdgeBand = 0.05;
 // seen from the slave): its centroid lies on that side.
 inline bool rises_towards(const PassRuntime& pr, core::Index s, const Located& L) {
   const double* c = &pr.fold_centroid[3 * static_cast<std::size_t>(s)];  // this cycle's
+  PLYFORM_INVARIANT(std::isfinite(c[0] + c[1] + c[2]),
+                    "a segment's centroid computed this cycle (surface_reads.hpp)");
   const double* n = L.sp.normal;
   const double above =
       (c[0] - L.sp.x[0]) * n[0] + (c[1] - L.sp.x[1]) * n[1] + (c[2] - L.sp.x[2]) * n[2];
@@ -236,6 +244,8 @@ inline core::Index deeper_across_valley(const PassRuntime& pr, std::size_t k, co
                                         bool free, bool was_located, const double* packed,
                                         double tol, Located& best) {
   const auto cu = static_cast<std::size_t>(cur);
+  PLYFORM_INVARIANT(pr.folded[cu] != kUnlistedFold,
+                    "a segment's fold tested this cycle (surface_reads.hpp)");
   if (!pr.folded[cu])
     return cur;
   const core::Index* qc = &pr.pass->segments[4 * cu];

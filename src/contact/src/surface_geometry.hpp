@@ -6,12 +6,16 @@
 #include <cmath>
 
 #include "pass_runtime.hpp"
+#include "plyform/core/invariant.hpp"
 
 namespace plyform::contact {
 
 // Unit normal of a segment's mid-surface (N1 N2 N3 right hand), from its corner positions:
-// the cross product of the diagonals (of the two edges at N1 for a triangle).
-inline void segment_normal(const core::Index* q, const double* packed, double n[3]) {
+// the cross product of the diagonals (of the two edges at N1 for a triangle). Always inlined:
+// surface_normals.cpp compiles it without fused multiply-adds, and a call there must not reach
+// another file's copy.
+[[gnu::always_inline]] inline void segment_normal(const core::Index* q, const double* packed,
+                                                  double n[3]) {
   const double *c0 = at(packed, q[0]), *c1 = at(packed, q[1]), *c2 = at(packed, q[2]);
   double a[3], b[3];
   if (q[2] == q[3]) {
@@ -35,6 +39,8 @@ inline void segment_normal(const core::Index* q, const double* packed, double n[
 inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side, double r[3]) {
   const double o = side * pr.st.seg_offset[s] * pr.corner_sign[4 * s + static_cast<std::size_t>(j)];
   const double* d = &pr.st.master_normal[3 * static_cast<std::size_t>(pr.corner[4 * s + j])];
+  PLYFORM_INVARIANT(std::isfinite(d[0] + d[1] + d[2]),
+                    "a master node's normal computed this cycle (surface_reads.hpp)");
   r[0] = o * d[0], r[1] = o * d[1], r[2] = o * d[2];
 }
 
@@ -43,8 +49,12 @@ inline void corner_offset(const PassRuntime& pr, std::size_t s, int j, int side,
 inline const double* current_segment_normal(const PassRuntime& pr, core::Index s,
                                             const double* packed, double* scratch) {
   const auto su = static_cast<std::size_t>(s);
-  if (pr.st.seg_normal_current)
+  if (pr.st.seg_normal_current) {
+    PLYFORM_INVARIANT(std::isfinite(pr.st.seg_normal[3 * su] + pr.st.seg_normal[3 * su + 1] +
+                                    pr.st.seg_normal[3 * su + 2]),
+                      "a segment's normal computed this cycle (surface_reads.hpp)");
     return &pr.st.seg_normal[3 * su];
+  }
   segment_normal(&pr.pass->segments[4 * su], packed, scratch);
   return scratch;
 }

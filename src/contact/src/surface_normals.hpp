@@ -7,6 +7,10 @@
 
 namespace plyform::contact {
 
+/// What `folded` holds, in the builds that check invariants, for a segment this cycle's lists
+/// left out (surface_reads.hpp): no reader may see it.
+inline constexpr unsigned char kUnlistedFold = 2;
+
 /// The master's nodal normals at t = 0 and the signs that turn each segment's normal to agree
 /// with them; the slave's likewise.
 void init_nodal_normals(PassRuntime& pr, const double* packed);
