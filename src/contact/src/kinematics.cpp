@@ -88,7 +88,7 @@ void leave_master_pressed(PassRuntime& pr, std::size_t k) {
 // half of the step's contact work with last cycle's forces. Fills the arrays.
 void measure(PassRuntime& pr, double dt, const double* packed, const double* temperature,
              const std::vector<double>& mass, const unsigned char* rigid, const Rotations& rot) {
-  pr.reads.all = true;  // at t = 0 (initial_contacts.cpp): every normal
+  pr.reads.all_master = pr.reads.all_slaves = true;  // at t = 0 (initial_contacts.cpp): all
   measure_surfaces(pr, dt, packed);
   measure_slaves(pr, dt, packed, temperature, mass, rigid, rot);
 }

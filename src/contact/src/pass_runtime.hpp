@@ -177,9 +177,10 @@ struct PassRuntime {
   bool folds_fixed = false;
   std::vector<double> chunk_sums;  // buffer of chunked_sum
   /// The parts of the surfaces this cycle's kinematics read (surface_reads.hpp), so that only
-  /// those normals, folds and centroids are computed; `all`: every one is.
+  /// those normals, folds and centroids are computed; `all_master`, `all_slaves`: every one of
+  /// that side is.
   struct SurfaceReads {
-    bool all = true;
+    bool all_master = true, all_slaves = true;
     long looks = 0, whole_until = 0;     // find_surface_reads() calls; lists again from this one
     std::vector<core::Index> segs;       // segments whose normal is computed (the master's)
     std::vector<core::Index> nodes;      // master nodes whose nodal normal is computed

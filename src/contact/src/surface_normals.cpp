@@ -114,7 +114,7 @@ void update_folds(PassRuntime& pr, const double* packed) {
   // Only the parts this cycle's kinematics read (surface_reads.hpp), but a rigid master's
   // folds, found once for the run, whole.
   const PassRuntime::SurfaceReads& r = pr.reads;
-  const bool whole = r.all || (!fixed && pr.rigid_master);
+  const bool whole = r.all_master || (!fixed && pr.rigid_master);
   const std::size_t nc = whole ? nseg : r.centroids.size();
   if (!whole) {
     poison_unlisted(c);
@@ -173,7 +173,7 @@ void normals_of_faces_and_nodes(std::size_t faces, const core::Index* corners, s
 void update_master_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const PassRuntime::SurfaceReads& r = pr.reads;
-  if (r.all) {
+  if (r.all_master) {
     normals_of_faces_and_nodes(cp.segments.size() / 4, cp.segments.data(), pr.master_nodes.size(),
                                pr.node_seg_start.data(), pr.node_seg.data(),
                                pr.node_seg_sign.data(), packed, pr.st.seg_normal.data(),
@@ -192,7 +192,7 @@ void update_master_normals(PassRuntime& pr, const double* packed) {
 void update_slave_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const PassRuntime::SurfaceReads& r = pr.reads;
-  if (r.all) {
+  if (r.all_slaves) {
     normals_of_faces_and_nodes(cp.slave_faces.size() / 4, cp.slave_faces.data(), cp.slave_count(),
                                cp.slave_face_start.data(), cp.slave_face_index.data(),
                                pr.slave_face_sign.data(), packed, pr.st.slave_face_normal.data(),

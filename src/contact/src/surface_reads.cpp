@@ -16,7 +16,7 @@ constexpr double kMostOf = 0.5;
 void find_surface_reads(PassRuntime& pr, bool spins) {
   PassRuntime::SurfaceReads& r = pr.reads;
   ++r.looks;
-  r.all = true;
+  r.all_master = r.all_slaves = true;
   if (r.looks < r.whole_until)
     return;
   const core::ContactPass& cp = *pr.pass;
@@ -118,13 +118,12 @@ void find_surface_reads(PassRuntime& pr, bool spins) {
         add(r.face_mark, r.faces, cp.slave_face_index[e]);
     }
   }
-  const bool most = static_cast<double>(listed) > kMostOf * static_cast<double>(nseg) ||
-                    static_cast<double>(r.slaves.size()) > kMostOf * static_cast<double>(ns);
-  if (most) {
+  // Each side on its own: a small tool's segments may be read most of them while few of a
+  // large blank's nodes are near it.
+  r.all_master = static_cast<double>(listed) > kMostOf * static_cast<double>(nseg);
+  r.all_slaves = static_cast<double>(r.slaves.size()) > kMostOf * static_cast<double>(ns);
+  if (r.all_master && r.all_slaves)
     r.whole_until = r.looks + kWholeFor;
-    return;
-  }
-  r.all = false;
 }
 
 }  // namespace plyform::contact

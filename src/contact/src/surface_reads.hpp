@@ -17,9 +17,10 @@ namespace plyform::contact {
 
 /// Fills pr.reads for this cycle, for the slave nodes this rank handles (pr.mine), and for
 /// every slave node the master's normals where the scatter reads them (`spins`: the nodes have
-/// rotations, whose couples an offset master's corners carry). When the lists would hold most
-/// of a surface, `all` instead: every normal is computed, as before, for the next 64 cycles (the
-/// lists cost about as much as what they would save).
+/// rotations, whose couples an offset master's corners carry). Where the lists would hold most
+/// of a side (the master's segments, the slave nodes), that side is computed whole
+/// (`all_master`, `all_slaves`): the lists cost about as much as what they would save; when both
+/// are, for the next 64 cycles without a look.
 void find_surface_reads(PassRuntime& pr, bool spins);
 
 }  // namespace plyform::contact
