@@ -79,7 +79,8 @@ void print_decomposition(const core::Model& model, const domain::Decomposition& 
   // What a run over these ranks does with the split today (docs/parallel.md).
   fmt::print(out,
              "  run it so: mpirun -np {} plyform run DECK -o OUTDIR (the element loop and the "
-             "contact's slave nodes by these domains; every rank holds the whole model; the "
+             "contact's slave nodes by these domains at first, split again while running as "
+             "the ranks' speed shows, --rebalance; every rank holds the whole model; the "
              "files are those of one rank)\n",
              d.domains);
 }
