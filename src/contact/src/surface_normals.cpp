@@ -173,38 +173,33 @@ void normals_of_faces_and_nodes(std::size_t faces, const core::Index* corners, s
 void update_master_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const PassRuntime::SurfaceReads& r = pr.reads;
-  if (r.all_master) {
-    normals_of_faces_and_nodes(cp.segments.size() / 4, cp.segments.data(), pr.master_nodes.size(),
-                               pr.node_seg_start.data(), pr.node_seg.data(),
-                               pr.node_seg_sign.data(), packed, pr.st.seg_normal.data(),
-                               pr.st.master_normal.data());
-  } else {
+  const bool whole = r.all_master;
+  if (!whole) {
     poison_unlisted(pr.st.seg_normal);
     poison_unlisted(pr.st.master_normal);
-    normals_of_faces_and_nodes(r.segs.size(), cp.segments.data(), r.nodes.size(),
-                               pr.node_seg_start.data(), pr.node_seg.data(),
-                               pr.node_seg_sign.data(), packed, pr.st.seg_normal.data(),
-                               pr.st.master_normal.data(), r.segs.data(), r.nodes.data());
   }
+  normals_of_faces_and_nodes(whole ? cp.segment_count() : r.segs.size(), cp.segments.data(),
+                             whole ? pr.master_nodes.size() : r.nodes.size(),
+                             pr.node_seg_start.data(), pr.node_seg.data(), pr.node_seg_sign.data(),
+                             packed, pr.st.seg_normal.data(), pr.st.master_normal.data(),
+                             whole ? nullptr : r.segs.data(), whole ? nullptr : r.nodes.data());
 }
 
 // The slave nodes' normals at the current positions, from their faces.
 void update_slave_normals(PassRuntime& pr, const double* packed) {
   const core::ContactPass& cp = *pr.pass;
   const PassRuntime::SurfaceReads& r = pr.reads;
-  if (r.all_slaves) {
-    normals_of_faces_and_nodes(cp.slave_faces.size() / 4, cp.slave_faces.data(), cp.slave_count(),
-                               cp.slave_face_start.data(), cp.slave_face_index.data(),
-                               pr.slave_face_sign.data(), packed, pr.st.slave_face_normal.data(),
-                               pr.st.slave_normal.data());
-  } else {
+  const bool whole = r.all_slaves;
+  if (!whole) {
     poison_unlisted(pr.st.slave_face_normal);
     poison_unlisted(pr.st.slave_normal);
-    normals_of_faces_and_nodes(r.faces.size(), cp.slave_faces.data(), r.slaves.size(),
-                               cp.slave_face_start.data(), cp.slave_face_index.data(),
-                               pr.slave_face_sign.data(), packed, pr.st.slave_face_normal.data(),
-                               pr.st.slave_normal.data(), r.faces.data(), r.slaves.data());
   }
+  normals_of_faces_and_nodes(whole ? cp.slave_faces.size() / 4 : r.faces.size(),
+                             cp.slave_faces.data(), whole ? cp.slave_count() : r.slaves.size(),
+                             cp.slave_face_start.data(), cp.slave_face_index.data(),
+                             pr.slave_face_sign.data(), packed, pr.st.slave_face_normal.data(),
+                             pr.st.slave_normal.data(), whole ? nullptr : r.faces.data(),
+                             whole ? nullptr : r.slaves.data());
 }
 
 // The master's nodal normals at t = 0 (the mean normal of the faces around each node) and the
