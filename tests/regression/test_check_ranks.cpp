@@ -1,7 +1,8 @@
 // `plyform check --ranks N` prints the model's split over N ranks (domain/decomposition.hpp):
 // a row per domain, the imbalance, the interface edges it cuts; and refuses, with the deck and the
 // reason, a count the model cannot honour. (The split's guarantees are tested in
-// tests/unit/domain against brute force.)
+// tests/unit/domain against brute force.) `plyform run --rebalance` on one rank says it has
+// nothing to do.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -51,6 +52,23 @@ TEST(CheckRanks, PrintsEachDomainAndTheSplitsFigures) {
   EXPECT_NE(text.find("contact slave nodes: 81 over 1 interface\n"), std::string::npos) << text;
   EXPECT_NE(text.find("run it so: mpirun -np 2 plyform run DECK -o OUTDIR"), std::string::npos)
       << text;
+}
+
+TEST(RunRanks, RebalanceOnOneRankIsSaidToDoNothing) {
+  for (const long every : {-1L, 50L, 0L}) {
+    test::TempDir dir;
+    RunOptions o;
+    o.deck = dir.write("layers.k", deck());
+    o.output = dir.path() / "out";
+    o.progress = false;
+    o.end_time = 1e-5;
+    o.rebalance_every = every;  // off, every 50 cycles, auto (the default: no word)
+    std::ostringstream out, err;
+    ASSERT_EQ(run_deck(o, out, err), 0) << err.str();
+    EXPECT_EQ(err.str().find("--rebalance has nothing to do on one rank") != std::string::npos,
+              every != 0)
+        << err.str();
+  }
 }
 
 TEST(CheckRanks, WithoutRanksItPrintsNoSplit) {

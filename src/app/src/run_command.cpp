@@ -160,6 +160,11 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
   }
   engine::SolverOptions so;
   so.ranks = &world;
+  if (world.size() == 1 && options.rebalance_every != 0) {
+    fmt::print(err,
+               "warning: --rebalance has nothing to do on one rank: it re-splits a run over "
+               "several MPI ranks (mpirun -np N plyform run ...)\n");
+  }
   if (world.size() > 1) {
     core::Stopwatch split_clock;
     const domain::DecomposeResult split = domain::decompose(model, world.size());
