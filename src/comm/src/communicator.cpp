@@ -123,6 +123,52 @@ void Communicator::all_gather_bytes(std::span<const std::byte> mine, std::span<s
   std::copy(mine.begin(), mine.end(), all.begin());
 }
 
+void Communicator::exchange(std::span<const double> send, std::span<const std::size_t> send_counts,
+                            std::span<double> receive,
+                            std::span<const std::size_t> receive_counts) const {
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1) {
+    // Posted receives first, then the sends: no rank waits on another's order.
+    thread_local std::vector<MPI_Request> requests;
+    requests.clear();
+    std::size_t at = 0;
+    for (std::size_t r = 0; r < receive_counts.size(); ++r) {
+      if (receive_counts[r] > 0) {
+        requests.emplace_back();
+        MPI_Irecv(receive.data() + at, static_cast<int>(receive_counts[r]), MPI_DOUBLE,
+                  static_cast<int>(r), 0, MPI_COMM_WORLD, &requests.back());
+      }
+      at += receive_counts[r];
+    }
+    at = 0;
+    for (std::size_t r = 0; r < send_counts.size(); ++r) {
+      if (send_counts[r] > 0) {
+        requests.emplace_back();
+        MPI_Isend(send.data() + at, static_cast<int>(send_counts[r]), MPI_DOUBLE,
+                  static_cast<int>(r), 0, MPI_COMM_WORLD, &requests.back());
+      }
+      at += send_counts[r];
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    return;
+  }
+#endif
+  static_cast<void>(send);
+  static_cast<void>(send_counts);
+  static_cast<void>(receive);
+  static_cast<void>(receive_counts);
+}
+
+void Communicator::max_each(std::span<long> values) const {
+#ifdef PLYFORM_HAVE_MPI
+  if (size_ > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_LONG, MPI_MAX,
+                  MPI_COMM_WORLD);
+  }
+#endif
+  static_cast<void>(values);
+}
+
 long Communicator::max(long mine) const {
   long all = mine;
 #ifdef PLYFORM_HAVE_MPI

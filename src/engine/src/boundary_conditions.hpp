@@ -41,6 +41,8 @@ class BoundaryConditions {
   [[nodiscard]] const std::vector<core::Index>& constrained_nodes() const {
     return constrained_nodes_;
   }
+  /// The corners of the pressure loads' segments (each once).
+  [[nodiscard]] const std::vector<core::Index>& pressure_nodes() const { return pressure_nodes_; }
 
  private:
   /// Adds the nodal forces of pressure p on one segment (N4 = N3: a triangle) to s.ex, s.ey,

@@ -4,16 +4,22 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
+#include "plyform/core/types.hpp"
+
 namespace plyform::engine {
+
+/// The nodes of one chunk of a sum: many chunks balance the threads on small models too.
+inline constexpr std::size_t kSumChunk = 1024;
 
 /// N sums at once: term(i, acc) adds node i's contributions to acc[0..N-1]. The loop body may
 /// also update per-node state (each i is visited exactly once), which lets one pass over the
 /// nodes both advance them and accumulate energies.
 template <std::size_t N, class F>
 std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
-  constexpr std::size_t kChunk = 1024;  // many chunks: balanced threads on small models too
+  constexpr std::size_t kChunk = kSumChunk;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   // The chunks' sums, kept between calls (each instantiation its own; called outside parallel
   // regions) so that the cycle does not allocate.
@@ -31,6 +37,33 @@ std::array<double, N> deterministic_sums(std::size_t n, F&& term) {
     std::array<double, N> acc{};
     for (std::size_t i = b; i < e; ++i)
       term(i, acc);
+    partial[c] = acc;
+  }
+  std::array<double, N> total{};
+  for (std::size_t c = 0; c < chunks; ++c)
+    for (std::size_t k = 0; k < N; ++k)
+      total[k] += partial[c][k];
+  return total;
+}
+
+/// The same sums over some of the nodes: `nodes` increasing, chunk_start[c] the place in `nodes`
+/// of the first node of chunk c (nodes c * kSumChunk onwards), chunk_start.back() = its size.
+/// Each chunk sums its listed nodes in order, then the chunks in order: where the nodes left
+/// out add only zeros (+0 or -0), the sums are bit for bit those over every node.
+template <std::size_t N, class F>
+std::array<double, N> deterministic_sums_over(std::span<const core::Index> nodes,
+                                              std::span<const std::size_t> chunk_start, F&& term) {
+  const std::size_t chunks = chunk_start.size() - 1;
+  thread_local std::vector<std::array<double, N>> scratch;
+  if (scratch.size() < chunks)
+    scratch.resize(chunks);
+  std::array<double, N>* const partial = scratch.data();
+#pragma omp parallel for schedule(static) proc_bind(close) if (chunks > 1)
+  for (long c = 0; c < static_cast<long>(chunks); ++c) {
+    std::array<double, N> acc{};
+    for (std::size_t j = chunk_start[static_cast<std::size_t>(c)];
+         j < chunk_start[static_cast<std::size_t>(c) + 1]; ++j)
+      term(static_cast<std::size_t>(nodes[j]), acc);
     partial[c] = acc;
   }
   std::array<double, N> total{};

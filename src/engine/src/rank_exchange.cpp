@@ -9,13 +9,6 @@
 namespace plyform::engine {
 namespace {
 
-// The nodes of element e of a block (a triangle repeats its third node: no matter here).
-template <class Block>
-std::span<const core::Index> element_nodes(const Block& block, std::size_t e) {
-  constexpr std::size_t k = std::is_same_v<Block, core::ShellBlock> ? 4 : 8;
-  return {&block.connectivity[k * e], k};
-}
-
 // Every per-element array of a block's state (stresses, plastic strains, histories, ...), with
 // its values per element; empty arrays are left out.
 std::vector<std::vector<double>*> element_arrays(element::ShellBlockState& st) {
@@ -78,8 +71,7 @@ RankExchange::RankExchange(const core::Model& model,
       std::vector<int> reporter(it.end - it.begin);
       std::size_t run_begin = it.end;  // the run of computed elements open (end: none)
       for (std::size_t e = it.begin; e < it.end; ++e) {
-        const auto nodes = it.shell ? element_nodes(model.shell_blocks[it.block], e)
-                                    : element_nodes(model.solid_blocks[it.block], e);
+        const auto nodes = element_nodes(model, it, e);
         int lowest = comm.size();
         bool mine = false;
         for (const core::Index node : nodes) {

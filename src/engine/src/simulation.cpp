@@ -20,6 +20,7 @@
 #include "deterministic_sum.hpp"
 #include "initial_shell_stress.hpp"
 #include "mass.hpp"
+#include "node_share.hpp"
 #include "output_clocks.hpp"
 #include "pass_clock.hpp"
 #include "plyform/core/invariant.hpp"
@@ -238,7 +239,13 @@ struct Simulation::State {
   std::vector<std::vector<ItemResult>> piece_results;
   std::vector<std::vector<RangeBooks>> piece_books;
   std::vector<double*> exchanged_fields;  // what the owners hand to every rank after the loop
-  long element_state_cycle = -1;          // the cycle whose element states were last gathered
+  // Where each rank moves only the nodes it needs (node_share.hpp; else every rank moves every
+  // node): the nodes; whether every rank holds every node's state now (after a gather); the
+  // ranks' agreement on a stop, reached in the velocity pass.
+  std::optional<NodeShare> node_share;
+  bool nodes_whole = true;
+  bool stop_agreed = false;
+  long element_state_cycle = -1;  // the cycle whose element states were last gathered
   // Re-balancing (rank_balance.hpp): the policy; this rank's seconds in its element pieces, and
   // its shared work's at the last look; what its last split took.
   std::optional<RankBalance> balance;
@@ -293,6 +300,8 @@ struct Simulation::State {
                       const element::NodalMoments& moments, const element::NodalSpin& spin);
   void book_item(const WorkItem& it, const ItemResult& x, InternalResult& r);
   void gather_element_state();
+  void share_nodes(std::span<const int> node_owner);
+  void gather_node_state();
   double advance_velocity(double t_now, double dt_prev, double dt_next, double dt_avg);
   /// The times of one velocity pass: t_n, the step before and after it, their mean.
   struct StepTimes {
@@ -321,6 +330,8 @@ struct Simulation::State {
   };
   void keep_constrained_forces();
   std::array<double, 3> free_velocities(double dt_avg);
+  template <class Step>
+  std::array<double, 3> free_velocities_of_nodes(const Step& step);
   void constrain_nodes(const StepTimes& times, VelocityWork& work);
   void advance_rigid_bodies(const StepTimes& times, VelocityWork& work);
   void stop_at_walls(const StepTimes& times, VelocityWork& work);
@@ -590,6 +601,7 @@ void Simulation::State::set_up_run() {
       exchanged_fields.insert(exchanged_fields.end(), {s.mx.data(), s.my.data(), s.mz.data()});
     if (!plastic_work.empty())
       exchanged_fields.push_back(plastic_work.data());
+    share_nodes(options.node_owner);
     if (options.resplit &&
         options.rank_cost.size() == static_cast<std::size_t>(options.ranks->size()) &&
         options.rebalance_every >= 0)
@@ -830,7 +842,10 @@ void Simulation::State::internal_on_ranks(double dt_step) {
   }
   // The exchange is its own pass in the timing table: its seconds leave the element loop's.
   core::Stopwatch exchange_clock;
-  ranks->gather_nodes(exchanged_fields);
+  if (node_share)
+    node_share->exchange(exchanged_fields);
+  else
+    ranks->gather_nodes(exchanged_fields);
   for (std::size_t p = 0; p < phases.size(); ++p) {
     piece_books[p].resize(pieces[p].size());
     for (std::size_t w = 0; w < pieces[p].size(); ++w) {
@@ -902,6 +917,7 @@ void Simulation::State::rebalance() {
     return;
   core::Stopwatch took;
   gather_element_state();
+  gather_node_state();
   const domain::OwnerSplit split = options.resplit(shares);
   if (!split.error.empty()) {
     balance.reset();  // the first split stays (the same error on every rank)
@@ -912,6 +928,7 @@ void Simulation::State::rebalance() {
   ranks.emplace(model, phases, split.node_owner, comm);
   if (contact)
     contact->share_slaves(comm, split.node_owner);
+  share_nodes(split.node_owner);
   split_took = took.lap();
   balance->split_done(split.cost, cycle);
 }
@@ -926,6 +943,42 @@ void Simulation::State::gather_element_state() {
     return;
   ranks->gather_element_state(shells, solids);
   element_state_cycle = cycle;
+}
+
+// Over several ranks, where no pass reads every node each cycle (the contact's search and the
+// heat do; the ties and the walls are not listed yet), each rank moves only the nodes it needs
+// (node_share.hpp); every rank moves the constrained, loaded and rigid nodes, which the passes
+// every rank runs whole read.
+void Simulation::State::share_nodes(std::span<const int> node_owner) {
+  if (contact || heat || ties || walls)
+    return;
+  std::vector<core::Index> everywhere = bc.constrained_nodes();
+  for (const core::NodalLoad& l : model.loads)
+    everywhere.push_back(l.node);
+  everywhere.insert(everywhere.end(), bc.pressure_nodes().begin(), bc.pressure_nodes().end());
+  everywhere.insert(everywhere.end(), rigid_bodies->rigid_nodes().begin(),
+                    rigid_bodies->rigid_nodes().end());
+  for (const core::FixedDofs& f : fixed_rotations)
+    everywhere.push_back(f.node);
+  node_share.emplace(model, phases, node_owner, everywhere, *options.ranks);
+}
+
+// Every node's state from its owner to every rank, before anything reads every node (the
+// outputs, the books, a checkpoint, a new split); once between two position passes.
+void Simulation::State::gather_node_state() {
+  if (!node_share || nodes_whole)
+    return;
+  std::vector<NodeShare::Field> fields;
+  for (std::vector<double>* v :
+       {&s.ux, &s.uy, &s.uz, &s.vx, &s.vy, &s.vz, &v_before_x, &v_before_y, &v_before_z})
+    fields.push_back({v->data(), 1});
+  if (rotations) {
+    for (std::vector<double>* v : {&s.wx, &s.wy, &s.wz, &w_before_x, &w_before_y, &w_before_z})
+      fields.push_back({v->data(), 1});
+  }
+  fields.push_back({packed.data(), 6});
+  node_share->gather(fields);
+  nodes_whole = true;
 }
 
 std::string Simulation::State::element_name(const WorkItem& it, std::size_t e) const {
@@ -963,6 +1016,7 @@ void Simulation::State::fail(const std::string& why) {
   // Keep the last state for the diagnosis, unless this cycle's outputs wrote it already (the
   // books' check follows them): a second state at one time would break the series.
   if (!clocks.written_now(Output::state, t)) {
+    gather_node_state();
     gather_element_state();
     sink.state(snapshot());
   }
@@ -972,6 +1026,7 @@ void Simulation::State::fail(const std::string& why) {
 // x = x0 + u and velocities at t_{n+1}. The hot passes then touch fewer arrays (each extra
 // stream costs, and many same-offset streams collide in the caches).
 void Simulation::State::sync() {
+  gather_node_state();
 #pragma omp parallel for schedule(static) proc_bind(close)
   for (long li = 0; li < static_cast<long>(n); ++li) {
     const auto i = static_cast<std::size_t>(li);
@@ -1059,7 +1114,7 @@ void Simulation::State::keep_constrained_forces() {
 // zeroed for the next cycle. Returns the loads' power on the velocity before and after, and
 // the count of non-finite velocities (bad_node names the first).
 std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
-  const auto sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
+  const auto step = [&](std::size_t i, std::array<double, 3>& acc) {
     const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
     const double fx = s.fx[i], fy = s.fy[i], fz = s.fz[i];
     const double ex = s.ex[i], ey = s.ey[i], ez = s.ez[i];
@@ -1093,7 +1148,10 @@ std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
       if (!std::isfinite(rx + ry + rz))
         acc[2] += 1.0;
     }
-  });
+  };
+  if (node_share)
+    return free_velocities_of_nodes(step);
+  const auto sums = deterministic_sums<3>(n, step);
   bad_velocities = sums[2];
   if (bad_velocities > 0.0) {
     // The node to name, found now: the constraints overwrite the velocities of the
@@ -1106,6 +1164,50 @@ std::array<double, 3> Simulation::State::free_velocities(double dt_avg) {
     while (bad_node + 1 < n && finite(bad_node))
       ++bad_node;
   }
+  return sums;
+}
+
+// free_velocities over the nodes this rank moves (node_share.hpp). The loads' power sums only the
+// loaded nodes' terms, which every rank moves (the others add zeros): the sums are those of one
+// rank. A non-finite velocity shows on the ranks that move its node: the ranks agree on the first
+// (and on a stop asked for by a signal, in the same reduction); then the sums are taken again
+// over every node, as one rank takes them, non-finite terms and all.
+template <class Step>
+std::array<double, 3> Simulation::State::free_velocities_of_nodes(const Step& step) {
+  const std::vector<core::Index>& nodes = node_share->nodes();
+  std::array<double, 3> sums = deterministic_sums_over<3>(nodes, node_share->chunk_start(), step);
+  const auto finite = [&](std::size_t i) {
+    return std::isfinite(s.vx[i] + s.vy[i] + s.vz[i]) &&
+           (!rotations || std::isfinite(s.wx[i] + s.wy[i] + s.wz[i]));
+  };
+  long first_bad = 0;  // n - the first bad node's index: the largest is the first
+  if (sums[2] > 0.0) {
+    for (const core::Index node : nodes) {
+      if (!finite(static_cast<std::size_t>(node))) {
+        first_bad = static_cast<long>(n) - static_cast<long>(node);
+        break;
+      }
+    }
+  }
+  core::Stopwatch agree;
+  std::array<long, 2> agreed{first_bad, options.stop != nullptr && *options.stop != 0 ? 1L : 0L};
+  options.ranks->max_each(agreed);
+  const double agreeing = agree.lap();  // its own pass in the timing table
+  clock.add(Pass::exchange, agreeing);
+  clock.add(Pass::velocities, -agreeing);
+  stop_agreed = agreed[1] != 0;
+  bad_velocities = 0.0;
+  if (agreed[0] == 0)
+    return sums;
+  bad_node = static_cast<std::size_t>(static_cast<long>(n) - agreed[0]);
+  gather_node_state();
+  sums = deterministic_sums<3>(n, [&](std::size_t i, std::array<double, 3>& acc) {
+    acc[0] += v_before_x[i] * s.ex[i] + v_before_y[i] * s.ey[i] + v_before_z[i] * s.ez[i];
+    acc[1] += s.vx[i] * s.ex[i] + s.vy[i] * s.ey[i] + s.vz[i] * s.ez[i];
+    if (!finite(i))
+      acc[2] += 1.0;
+  });
+  bad_velocities = std::max(sums[2], 1.0);
   return sums;
 }
 
@@ -1521,9 +1623,13 @@ void Simulation::State::write_outputs(bool last) {
 
 // Positions at t_{n+1} and the packed copy the elements gather from.
 void Simulation::State::positions() {
+  // Over several ranks, the nodes this rank moves (node_share.hpp), else every node.
+  const core::Index* listed = node_share ? node_share->nodes().data() : nullptr;
+  const std::size_t count = node_share ? node_share->nodes().size() : n;
+  nodes_whole = !node_share;
 #pragma omp parallel for schedule(static) proc_bind(close)
-  for (long li = 0; li < static_cast<long>(n); ++li) {
-    const auto i = static_cast<std::size_t>(li);
+  for (long li = 0; li < static_cast<long>(count); ++li) {
+    const auto i = listed ? static_cast<std::size_t>(listed[li]) : static_cast<std::size_t>(li);
     const double vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
     const double ux = s.ux[i] + vx * dt, uy = s.uy[i] + vy * dt, uz = s.uz[i] + vz * dt;
     s.ux[i] = ux;
@@ -1919,6 +2025,7 @@ void Simulation::State::visit_state(core::StateArchive& a) {
 
 // The engine's state under "engine/", the output sink's under "outputs/".
 core::StateArchive::Records Simulation::State::checkpoint_records() {
+  gather_node_state();
   gather_element_state();
   auto archive = core::StateArchive::for_saving();
   {
@@ -2020,7 +2127,11 @@ RunResult Simulation::run() {
       st.clock.add(Pass::exchange, watch.lap());
     }
     bool stop = st.options.stop != nullptr && *st.options.stop != 0;
-    if (st.ranks)  // a signal reaches the ranks at different cycles: all stop at the same one
+    // A signal reaches the ranks at different cycles: all stop at the same one (agreed in the
+    // velocity pass where each rank moves its own nodes).
+    if (st.node_share && !st.thermal_only)
+      stop = st.stop_agreed;
+    else if (st.ranks)
       stop = st.options.ranks->max(stop ? 1L : 0L) != 0;
     if (checkpoints && (stop || (st.options.checkpoint_cycles > 0 &&
                                  st.cycle % st.options.checkpoint_cycles == 0))) {

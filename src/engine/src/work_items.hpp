@@ -4,12 +4,21 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <span>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "plyform/core/model.hpp"
 
 namespace plyform::engine {
+
+/// The nodes of element e of a block (a triangle repeats its third node).
+template <class Block>
+std::span<const core::Index> element_nodes(const Block& block, std::size_t e) {
+  constexpr std::size_t k = std::is_same_v<Block, core::ShellBlock> ? 4 : 8;
+  return {&block.connectivity[k * e], k};
+}
 
 // A range of elements of one colour of one block: the unit of parallel work in the element
 // loop. Items of one phase (block, colour) share no node and run in parallel; phases run in
@@ -18,6 +27,13 @@ struct WorkItem {
   bool shell;  ///< a shell block (else a solid block)
   std::size_t block, begin, end;
 };
+
+/// The nodes of element e of a work item's block.
+inline std::span<const core::Index> element_nodes(const core::Model& model, const WorkItem& it,
+                                                  std::size_t e) {
+  return it.shell ? element_nodes(model.shell_blocks[it.block], e)
+                  : element_nodes(model.solid_blocks[it.block], e);
+}
 
 template <class Block>
 void add_phases(const core::Model& model, const std::vector<Block>& blocks, bool shell,

@@ -39,8 +39,16 @@ class Communicator {
   /// The same for raw bytes.
   void all_gather_bytes(std::span<const std::byte> mine, std::span<std::byte> all,
                         std::span<const std::size_t> per_rank) const;
+  /// Values between pairs of ranks: send_counts[r] values of `send` (laid end to end, rank by
+  /// rank) go to rank r, and receive_counts[r] values from rank r land in `receive` likewise.
+  /// Only the ranks with a count talk (a domain's neighbours); both sides must agree on the
+  /// counts. The counts to and from this rank itself must be 0.
+  void exchange(std::span<const double> send, std::span<const std::size_t> send_counts,
+                std::span<double> receive, std::span<const std::size_t> receive_counts) const;
   /// The largest of every rank's value.
   [[nodiscard]] long max(long mine) const;
+  /// The largest of every rank's values, entry by entry, in place.
+  void max_each(std::span<long> values) const;
   /// Stops every rank of the run with `code` (a rank that cannot go on while the others wait).
   [[noreturn]] void abort(int code) const;
 
