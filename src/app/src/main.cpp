@@ -5,9 +5,12 @@
 #include <iostream>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/app/stop_signals.hpp"
 #include "plyform/comm/communicator.hpp"
 
 int main(int argc, char** argv) {
+  // Before MPI and OpenMP start threads: the stop signals taken by a thread of their own.
+  plyform::app::watch_stop_signals();
   // Under mpirun: MPI for the whole command (docs/parallel.md); otherwise nothing.
   const plyform::comm::Session mpi(&argc, &argv);
   CLI::App app{"plyform: explicit finite elements for the thermoforming of multi-layer sheets"};

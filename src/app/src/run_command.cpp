@@ -12,6 +12,7 @@
 #include <ostream>
 
 #include "plyform/app/commands.hpp"
+#include "plyform/app/stop_signals.hpp"
 #include "plyform/comm/communicator.hpp"
 #include "plyform/core/stopwatch.hpp"
 #include "plyform/domain/decomposition.hpp"
@@ -29,34 +30,8 @@
 namespace plyform::app {
 namespace {
 
-// SIGINT and SIGTERM ask the run to stop after its cycle with a checkpoint. The first one
-// restores the default action, so that a second one ends the process at once.
+// Set by the first SIGINT or SIGTERM of a run (stop_signals.hpp).
 volatile std::sig_atomic_t stop_requested = 0;
-
-extern "C" void request_stop(int signal) {
-  stop_requested = 1;
-  std::signal(signal, SIG_DFL);
-}
-
-// Installs request_stop for the lifetime of a run; the previous handlers come back after it.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    stop_requested = 0;
-    int_ = std::signal(SIGINT, request_stop);
-    term_ = std::signal(SIGTERM, request_stop);
-  }
-  ~StopOnSignals() {
-    std::signal(SIGINT, int_);
-    std::signal(SIGTERM, term_);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-
- private:
-  void (*int_)(int) = SIG_DFL;
-  void (*term_)(int) = SIG_DFL;
-};
 
 // The sink of the ranks after the first over MPI: every rank holds the whole state, and the first
 // writes the files (rank_exchange.hpp).
@@ -217,7 +192,7 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
     so.checkpoint_cycles = model.output.d3dump_cycles;
     so.fingerprint = read.model.source_fingerprint;
     so.stop = &stop_requested;
-    const StopOnSignals signals;
+    const StopOnSignals signals(&stop_requested);
     engine::Simulation simulation(model, writer, so);
     if (resume) {
       simulation.restore(*resume);
