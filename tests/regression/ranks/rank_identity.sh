@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A run over N MPI ranks gives the files of the run on one rank, byte for byte (docs/parallel.md:
 # every sum in the same order whatever the rank count). Not a comparison with an earlier output:
-# the property itself, on the model kinds whose passes differ (shells with J2, a rigid punch's
-# contact, the three-layer cup's cohesive interfaces, the hot draw's heat and contacts, a solid
-# block, the DCB's cohesive strip), also while the ranks split the model again as they run
+# the property itself, on the model kinds whose passes differ (shells with J2, nodal and pressure
+# loads, a rigid punch's contact, the three-layer cup's cohesive interfaces, the hot draw's heat
+# and contacts, a solid block, the DCB's cohesive strip), also while the ranks split the model
+# again as they run
 # (--rebalance); an instability on 3 ranks (the diagnosis, the exit code and
 # the files of the run on one); and a run stopped on 2 ranks and restarted on 2 and on 1 (the
 # files those of the uninterrupted run on one rank).
@@ -33,6 +34,23 @@ fi
 
 python3 "$src/bench/decks/plate.py" plate --n 24 --cycles 300
 python3 "$src/bench/decks/plate.py" punch --n 24 --punch --cycles 700
+# The plate with nodal loads and a follower pressure on two elements: the loaded nodes, which
+# every rank moves where each rank moves its own nodes, and the loads' power summed over them.
+mkdir -p loads
+sed '$d' plate/plate.k > loads/plate.k
+cat >> loads/plate.k << 'EOF'
+*DEFINE_CURVE
+        77
+                 0.0                 1.0
+                 1.0                 1.0
+*LOAD_NODE_POINT
+       100         3        77     -20.0
+       333         1        77      15.0
+*LOAD_SEGMENT
+        77     -0.05       0.0       201       202       227       226
+        77     -0.05       0.0       400       401       426       425
+*END
+EOF
 python3 "$src/examples/square_cup/generate.py" cup --layers 3 --n 8 --plain --depth 3 > /dev/null
 python3 "$src/examples/deep_drawing/generate.py" draw --n 6 --end 0.001 > /dev/null
 python3 "$src/examples/solid_block/generate.py" block --elements 6 > /dev/null
@@ -61,7 +79,7 @@ run_on() {  # run_on RANKS DECK OUT [ARGS...]
   fi
 }
 
-for model in plate/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k \
+for model in plate/plate.k loads/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k \
   block/solid_block.k dcb/dcb.k; do
   name=$(dirname "$model")
   run_on 1 "$model" "$name.1"
