@@ -1,7 +1,6 @@
 #include "rank_exchange.hpp"
 
 #include <algorithm>
-#include <array>
 #include <tuple>
 
 #include "plyform/core/invariant.hpp"
@@ -153,8 +152,51 @@ void RankExchange::gather_nodes(std::span<double* const> fields) {
   }
 }
 
-void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& piece_books,
-                                   std::vector<element::ShellBlockState>& shells, bool thickness) {
+namespace {
+
+// A rank's report as it travels, first in its part of the elements' all-gather.
+constexpr std::size_t kReport = 9;
+
+void put_report(const RankElementReport& mine, std::vector<double>& out) {
+  out.insert(out.end(),
+             {mine.dt_min, static_cast<double>(mine.dt_phase), static_cast<double>(mine.dt_item),
+              static_cast<double>(mine.dt_element), mine.failed ? 1.0 : 0.0,
+              mine.unsupported_material ? 1.0 : 0.0, static_cast<double>(mine.failed_phase),
+              static_cast<double>(mine.failed_item), static_cast<double>(mine.failed_element)});
+}
+
+// The smallest step and the first failure among the ranks' reports: by value, then by place in
+// the loop.
+void choose(const double* v, RankElementReport& best) {
+  const auto as_index = [](double x) { return static_cast<std::size_t>(x); };
+  const auto place = [](const double* w, std::size_t at) {
+    return std::make_tuple(w[at], w[at + 1], w[at + 2]);
+  };
+  if (std::make_tuple(v[0], v[1], v[2], v[3]) <
+      std::make_tuple(best.dt_min, static_cast<double>(best.dt_phase),
+                      static_cast<double>(best.dt_item), static_cast<double>(best.dt_element))) {
+    best.dt_min = v[0];
+    best.dt_phase = as_index(v[1]);
+    best.dt_item = as_index(v[2]);
+    best.dt_element = as_index(v[3]);
+  }
+  if (v[4] != 0.0 &&
+      (!best.failed || place(v, 6) < std::make_tuple(static_cast<double>(best.failed_phase),
+                                                     static_cast<double>(best.failed_item),
+                                                     static_cast<double>(best.failed_element)))) {
+    best.failed = true;
+    best.unsupported_material = v[5] != 0.0;
+    best.failed_phase = as_index(v[6]);
+    best.failed_item = as_index(v[7]);
+    best.failed_element = as_index(v[8]);
+  }
+}
+
+}  // namespace
+
+RankElementReport RankExchange::gather_elements(
+    const std::vector<std::vector<RangeBooks>>& piece_books,
+    std::vector<element::ShellBlockState>& shells, bool thickness, const RankElementReport& mine) {
   constexpr std::size_t k = 6;  // the books' sums
   const auto me = static_cast<std::size_t>(comm_->rank());
   const auto ranks = static_cast<std::size_t>(comm_->size());
@@ -163,6 +205,7 @@ void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& p
                                b.hourglass_start_power, b.hourglass_end_power});
   };
   send_.clear();
+  put_report(mine, send_);
   for (const WholeItem& x : my_whole_)
     put(piece_books[x.phase][x.piece]);
   for (std::size_t j = split_start_[me]; j < split_start_[me + 1]; ++j)
@@ -176,7 +219,7 @@ void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& p
   std::vector<std::size_t> per_rank(ranks);
   std::size_t total = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
-    per_rank[r] = k * (whole_start_[r + 1] - whole_start_[r]) +
+    per_rank[r] = kReport + k * (whole_start_[r + 1] - whole_start_[r]) +
                   k * (split_start_[r + 1] - split_start_[r]) +
                   (thickness ? reported_shells_[r] : 0);
     total += per_rank[r];
@@ -187,8 +230,11 @@ void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& p
     const double* v = &receive_[at];
     return RangeBooks{v[0], v[1], v[2], v[3], v[4], v[5]};
   };
+  RankElementReport chosen;
   std::size_t at = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
+    choose(&receive_[at], chosen);
+    at += kReport;
     for (std::size_t j = whole_start_[r]; j < whole_start_[r + 1]; ++j, at += k)
       item_books_[whole_[j].first][whole_[j].second] = take(at);
     for (std::size_t j = split_start_[r]; j < split_start_[r + 1]; ++j, at += k)
@@ -219,50 +265,7 @@ void RankExchange::gather_elements(const std::vector<std::vector<RangeBooks>>& p
       item_books_[p][w] = sum;
     }
   }
-}
-
-RankElementReport RankExchange::choose(const RankElementReport& mine) const {
-  constexpr std::size_t k = 9;
-  const std::array<double, k> one = {mine.dt_min,
-                                     static_cast<double>(mine.dt_phase),
-                                     static_cast<double>(mine.dt_item),
-                                     static_cast<double>(mine.dt_element),
-                                     mine.failed ? 1.0 : 0.0,
-                                     mine.unsupported_material ? 1.0 : 0.0,
-                                     static_cast<double>(mine.failed_phase),
-                                     static_cast<double>(mine.failed_item),
-                                     static_cast<double>(mine.failed_element)};
-  const auto ranks = static_cast<std::size_t>(comm_->size());
-  std::vector<double> all(k * ranks);
-  const std::vector<std::size_t> per_rank(ranks, k);
-  comm_->all_gather(one, all, per_rank);
-  RankElementReport best;
-  const auto place = [](const double* v, std::size_t at) {
-    return std::make_tuple(v[at], v[at + 1], v[at + 2]);
-  };
-  for (std::size_t r = 0; r < ranks; ++r) {
-    const double* v = &all[k * r];
-    const auto as_index = [](double x) { return static_cast<std::size_t>(x); };
-    if (std::make_tuple(v[0], v[1], v[2], v[3]) <
-        std::make_tuple(best.dt_min, static_cast<double>(best.dt_phase),
-                        static_cast<double>(best.dt_item), static_cast<double>(best.dt_element))) {
-      best.dt_min = v[0];
-      best.dt_phase = as_index(v[1]);
-      best.dt_item = as_index(v[2]);
-      best.dt_element = as_index(v[3]);
-    }
-    if (v[4] != 0.0 &&
-        (!best.failed || place(v, 6) < std::make_tuple(static_cast<double>(best.failed_phase),
-                                                       static_cast<double>(best.failed_item),
-                                                       static_cast<double>(best.failed_element)))) {
-      best.failed = true;
-      best.unsupported_material = v[5] != 0.0;
-      best.failed_phase = as_index(v[6]);
-      best.failed_item = as_index(v[7]);
-      best.failed_element = as_index(v[8]);
-    }
-  }
-  return best;
+  return chosen;
 }
 
 void RankExchange::gather_element_state(std::vector<element::ShellBlockState>& shells,

@@ -73,15 +73,15 @@ class RankExchange {
   /// shell's thickness (which the contact's offsets and the thermal step read every cycle), from
   /// the elements' reporting ranks. An item whose elements all report to one rank comes as that
   /// rank's piece's sums (`piece_books`, per phase and piece); the others as their elements'
-  /// books, summed here in the item's order.
-  void gather_elements(const std::vector<std::vector<RangeBooks>>& piece_books,
-                       std::vector<element::ShellBlockState>& shells, bool thickness);
+  /// books, summed here in the item's order. Every rank's report of its pieces travels with
+  /// them (one collective): returns the chosen step and failure (by value, then place).
+  RankElementReport gather_elements(const std::vector<std::vector<RangeBooks>>& piece_books,
+                                    std::vector<element::ShellBlockState>& shells, bool thickness,
+                                    const RankElementReport& mine);
   /// Per phase and item, its books after gather_elements.
   [[nodiscard]] const std::vector<std::vector<RangeBooks>>& item_books() const {
     return item_books_;
   }
-  /// Every rank's report of its pieces; the chosen step and failure (by value, then place).
-  [[nodiscard]] RankElementReport choose(const RankElementReport& mine) const;
   /// Before the states, the element histories, the end's files and a checkpoint are written:
   /// every element's whole state from its reporting rank, so that every rank holds the state a
   /// run on one rank would.

@@ -855,8 +855,8 @@ void Simulation::State::internal_on_ranks(double dt_step) {
     }
   }
   // The shells' thickness is read every cycle by the contact's offsets and the thermal step.
-  ranks->gather_elements(piece_books, shells, contact.has_value() || heat.has_value());
-  const RankElementReport chosen = ranks->choose(mine);
+  const RankElementReport chosen =
+      ranks->gather_elements(piece_books, shells, contact.has_value() || heat.has_value(), mine);
   const double exchanged = exchange_clock.lap();
   clock.add(Pass::exchange, exchanged);
   clock.add(Pass::elements, -exchanged);
