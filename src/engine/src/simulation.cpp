@@ -946,11 +946,11 @@ void Simulation::State::gather_element_state() {
 }
 
 // Over several ranks, where no pass reads every node each cycle (the contact's search and the
-// heat do; the ties and the walls are not listed yet), each rank moves only the nodes it needs
-// (node_share.hpp); every rank moves the constrained, loaded and rigid nodes, which the passes
-// every rank runs whole read.
+// heat do), each rank moves only the nodes it needs (node_share.hpp); every rank moves the
+// constrained, loaded and rigid nodes, the tied nodes and their segments' and the rigid walls'
+// nodes, which the passes every rank runs whole read.
 void Simulation::State::share_nodes(std::span<const int> node_owner) {
-  if (contact || heat || ties || walls)
+  if (contact || heat)
     return;
   std::vector<core::Index> everywhere = bc.constrained_nodes();
   for (const core::NodalLoad& l : model.loads)
@@ -960,6 +960,12 @@ void Simulation::State::share_nodes(std::span<const int> node_owner) {
                     rigid_bodies->rigid_nodes().end());
   for (const core::FixedDofs& f : fixed_rotations)
     everywhere.push_back(f.node);
+  if (ties)
+    ties->nodes(everywhere);
+  for (const core::RigidWall& w : model.rigid_walls) {
+    everywhere.insert(everywhere.end(), w.nodes.begin(), w.nodes.end());
+    everywhere.insert(everywhere.end(), w.display_nodes.begin(), w.display_nodes.end());
+  }
   node_share.emplace(model, phases, node_owner, everywhere, *options.ranks);
 }
 

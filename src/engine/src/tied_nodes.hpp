@@ -14,6 +14,7 @@
 // while the segment moves as a whole, a trace where it deforms.
 
 #include <array>
+#include <iterator>
 #include <vector>
 
 #include "plyform/core/model.hpp"
@@ -48,6 +49,14 @@ class TiedNodes {
   /// master surface applied to its tied nodes, sum over them of m_s a_s - (e_s - f_s) (the
   /// node's mass times the acceleration the tie gave it, less the forces that act on it).
   [[nodiscard]] const std::vector<std::array<double, 3>>& reactions() const { return reaction_; }
+  /// Appends every tied slave node and its segment's nodes (what gather() and follow() read and
+  /// write).
+  void nodes(std::vector<core::Index>& out) const {
+    for (const Link& l : slave_) {
+      out.push_back(l.slave);
+      out.insert(out.end(), std::begin(l.node), std::end(l.node));
+    }
+  }
 
  private:
   struct Link {

@@ -3,9 +3,9 @@
 # every sum in the same order whatever the rank count). Not a comparison with an earlier output:
 # the property itself, on the model kinds whose passes differ (shells with J2, nodal and pressure
 # loads, a rigid punch's contact, the three-layer cup's cohesive interfaces, the hot draw's heat
-# and contacts, a solid block, the DCB's cohesive strip), also while the ranks split the model
-# again as they run
-# (--rebalance); an instability on 3 ranks (the diagnosis, the exit code and
+# and contacts, a solid block, a rigid wall and a tied contact, the DCB's cohesive strip), also
+# while the ranks split the model again as they run (--rebalance); an instability on 3 ranks (the
+# diagnosis, the exit code and
 # the files of the run on one); and a run stopped on 2 ranks and restarted on 2 and on 1 (the
 # files those of the uninterrupted run on one rank).
 #
@@ -54,6 +54,8 @@ EOF
 python3 "$src/examples/square_cup/generate.py" cup --layers 3 --n 8 --plain --depth 3 > /dev/null
 python3 "$src/examples/deep_drawing/generate.py" draw --n 6 --end 0.001 > /dev/null
 python3 "$src/examples/solid_block/generate.py" block --elements 6 > /dev/null
+mkdir -p wall  # a moving rigid wall striking a bar of two tied halves
+cp "$src/tests/regression/run/decks/restart_wall_tied.k" wall/
 python3 "$src/examples/dcb/generate.py" dcb --dx 1.0 --end 0.001 > /dev/null
 
 failed=0
@@ -80,7 +82,7 @@ run_on() {  # run_on RANKS DECK OUT [ARGS...]
 }
 
 for model in plate/plate.k loads/plate.k punch/plate.k cup/square_cup_3.k draw/deep_drawing.k \
-  block/solid_block.k dcb/dcb.k; do
+  block/solid_block.k wall/restart_wall_tied.k dcb/dcb.k; do
   name=$(dirname "$model")
   run_on 1 "$model" "$name.1"
   for np in 2 3 4; do
