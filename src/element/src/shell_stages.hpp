@@ -360,9 +360,10 @@ struct ColumnSums {
   double tz;
 };
 template <std::size_t G, std::size_t P>
-inline void sum_columns(const ShellBlockState& st, const PointBuffers<P>& b, std::size_t q0,
-                        std::size_t at0, std::size_t nip, double t, const double* zeta,
-                        const double* weight, double kappa, bool plastic, ColumnSums<G>& r) {
+[[gnu::always_inline]] inline void sum_columns(const ShellBlockState& st, const PointBuffers<P>& b,
+                                               std::size_t q0, std::size_t at0, std::size_t nip,
+                                               double t, const double* zeta, const double* weight,
+                                               double kappa, bool plastic, ColumnSums<G>& r) {
   const double inv_kappa = kappa > 0.0 ? 1.0 / kappa : 0.0;
   constexpr double kMean = 0.5 / static_cast<double>(G);  // the weights sum to 2 per column
   const double* __restrict sxx = st.s[0].data() + q0;
@@ -379,32 +380,46 @@ inline void sum_columns(const ShellBlockState& st, const PointBuffers<P>& b, std
   const double* __restrict dzx = b.dzx + at0;
   const double* __restrict dzz = b.dzz + at0;
   double tz = 0.0;
-  for (std::size_t g = 0; g < G; ++g) {
-    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, w = 0, wp = 0;
-    for (std::size_t k = 0; k < nip; ++k) {
-      const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
-      const std::size_t i = g * nip + k;
-      const double s0 = sxx[i], s1 = syy[i], s2 = sxy[i], s3 = syz[i], s4 = szx[i];
-      nxx += wk * s0;
-      nyy += wk * s1;
-      nxy += wk * s2;
-      mxx += wk * z * s0;
-      myy += wk * z * s1;
-      mxy += wk * z * s2;
-      qy += wk * s3;
-      qx += wk * s4;
-      tz += kMean * weight[k] * dzz[i];
-      w += weight[k] * (s0 * dxx[i] + s1 * dyy[i] + 2.0 * s2 * dxy[i] +
-                        2.0 * inv_kappa * (s3 * dyz[i] + s4 * dzx[i]));
-      if (plastic) {
-        const double de = eps[i] - eps0[i];
-        const double eq = std::sqrt(s0 * s0 + s1 * s1 - s0 * s1 + 3.0 * s2 * s2);
-        wp += de > 0.0 ? weight[k] * eq * de : 0.0;
+  // With four columns (ELFORM 16) the plastic work's branch is taken outside the loops: inside,
+  // GCC turned its loads into masked vector loads, after which this project's AMD EPYC stalled
+  // depending on where the stack lay (ASLR): the ELFORM 16 plate benchmark ran at 1.0-3.5 M
+  // element-cycles/s from run to run, and at 3.55-3.66 M with the branch outside. With one
+  // column (Belytschko-Tsay) the branch stays inside: outside, that plate ran 5 % slower.
+  enum class Plastic { inside, always, never };
+  const auto columns = [&]<Plastic kPlastic>() __attribute__((always_inline)) {
+    for (std::size_t g = 0; g < G; ++g) {
+      double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0, qx = 0, qy = 0, w = 0, wp = 0;
+      for (std::size_t k = 0; k < nip; ++k) {
+        const double wk = 0.5 * t * weight[k], z = 0.5 * t * zeta[k];
+        const std::size_t i = g * nip + k;
+        const double s0 = sxx[i], s1 = syy[i], s2 = sxy[i], s3 = syz[i], s4 = szx[i];
+        nxx += wk * s0;
+        nyy += wk * s1;
+        nxy += wk * s2;
+        mxx += wk * z * s0;
+        myy += wk * z * s1;
+        mxy += wk * z * s2;
+        qy += wk * s3;
+        qx += wk * s4;
+        tz += kMean * weight[k] * dzz[i];
+        w += weight[k] * (s0 * dxx[i] + s1 * dyy[i] + 2.0 * s2 * dxy[i] +
+                          2.0 * inv_kappa * (s3 * dyz[i] + s4 * dzx[i]));
+        if (kPlastic == Plastic::always || (kPlastic == Plastic::inside && plastic)) {
+          const double de = eps[i] - eps0[i];
+          const double eq = std::sqrt(s0 * s0 + s1 * s1 - s0 * s1 + 3.0 * s2 * s2);
+          wp += de > 0.0 ? weight[k] * eq * de : 0.0;
+        }
       }
+      r.nxx[g] = nxx, r.nyy[g] = nyy, r.nxy[g] = nxy, r.mxx[g] = mxx, r.myy[g] = myy;
+      r.mxy[g] = mxy, r.qx[g] = qx, r.qy[g] = qy, r.work[g] = w, r.plastic[g] = wp;
     }
-    r.nxx[g] = nxx, r.nyy[g] = nyy, r.nxy[g] = nxy, r.mxx[g] = mxx, r.myy[g] = myy;
-    r.mxy[g] = mxy, r.qx[g] = qx, r.qy[g] = qy, r.work[g] = w, r.plastic[g] = wp;
-  }
+  };
+  if constexpr (G == 1)
+    columns.template operator()<Plastic::inside>();
+  else if (plastic)
+    columns.template operator()<Plastic::always>();
+  else
+    columns.template operator()<Plastic::never>();
   r.tz = tz;
 }
 
