@@ -4,10 +4,10 @@
 # the property itself, on the model kinds whose passes differ (shells with J2, nodal and pressure
 # loads, a rigid punch's contact, the three-layer cup's cohesive interfaces, the hot draw's heat
 # and contacts, a solid block, a rigid wall and a tied contact, the DCB's cohesive strip), also
-# while the ranks split the model again as they run (--rebalance); an instability on 3 ranks (the
-# diagnosis, the exit code and
-# the files of the run on one); and a run stopped on 2 ranks and restarted on 2 and on 1 (the
-# files those of the uninterrupted run on one rank).
+# while the ranks split the model again as they run (--rebalance); an instability and a
+# non-finite velocity on 3 ranks (the diagnosis, the exit code and the files of the run on one);
+# and a run stopped on 2 ranks and restarted on 2 and on 1 (the files those of the uninterrupted
+# run on one rank).
 #
 #   rank_identity.sh PLYFORM WORKDIR
 set -euo pipefail
@@ -125,6 +125,42 @@ fi
 grep -q "Exit code: *3" unstable.3.err || { echo "FAIL: the ranks did not exit 3"; failed=1; }
 same_files unstable.1 unstable.3
 echo "an instability on 1 and 3 ranks compared: $(cut -c1-80 unstable.1.diagnosis)"
+
+# A non-finite velocity (a load of 2e308 thrown onto one node of the plain plate, where each rank
+# moves its own nodes): the ranks agree on the node and stop where one rank stops, with its
+# diagnosis, its exit code and its files.
+mkdir -p nan
+sed '$d' plate/plate.k > nan/plate.k
+cat >> nan/plate.k << 'EOF'
+*DEFINE_CURVE
+        78
+                 0.0                 0.0
+              0.0005                 0.0
+             0.00051             1.0e308
+                 1.0             1.0e308
+*LOAD_NODE_POINT
+       300         3        78       2.0
+*END
+EOF
+for np in 1 3; do
+  code=0
+  if [[ $np == 1 ]]; then
+    "$plyform" run nan/plate.k -o nan.$np > nan.$np.out 2> nan.$np.err || code=$?
+  else
+    mpirun -np $np "$plyform" run nan/plate.k -o nan.$np > nan.$np.out 2> nan.$np.err || code=$?
+  fi
+  [[ $code != 0 ]] || { echo "FAIL: the plate with a non-finite velocity ran to its end on $np rank(s)"; failed=1; }
+done
+grep "^error" nan.1.err > nan.1.diagnosis || true
+grep "^error" nan.3.err > nan.3.diagnosis || true
+if ! grep -q "non-finite velocity" nan.1.diagnosis || ! cmp -s nan.1.diagnosis nan.3.diagnosis; then
+  echo "FAIL: the non-finite velocity's diagnosis on 3 ranks is not the one on 1:"
+  cat nan.1.diagnosis nan.3.diagnosis
+  failed=1
+fi
+grep -q "Exit code: *3" nan.3.err || { echo "FAIL: the ranks did not exit 3 (non-finite velocity)"; failed=1; }
+same_files nan.1 nan.3
+echo "a non-finite velocity on 1 and 3 ranks compared: $(cut -c1-80 nan.1.diagnosis)"
 
 # Restart on 2 ranks: a run stopped by SIGTERM sent to one of its ranks (every rank stops at the
 # same cycle and the first writes the checkpoint), then continued on 2 ranks, and on 1: the files
