@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <array>
 #include <cmath>
 #include <csignal>
 #include <exception>
@@ -72,6 +73,21 @@ std::vector<output::RunSummary::RankTiming> rank_timing(const comm::Communicator
     for (std::size_t g = 0; g < std::size(kGroups); ++g)
       out[r].groups.emplace_back(kGroups[g], all[k * r + g + 1]);
   }
+  return out;
+}
+
+// Over several ranks: the nodes each rank moved, rank by rank (a collective); empty where every
+// rank moved every node.
+std::vector<long> moved_nodes(const comm::Communicator& world, std::size_t mine) {
+  const auto ranks = static_cast<std::size_t>(world.size());
+  std::vector<double> all(ranks);
+  const std::array<double, 1> one{static_cast<double>(mine)};
+  world.all_gather(one, all, std::vector<std::size_t>(ranks, 1));
+  std::vector<long> out;
+  if (mine == 0)
+    return out;  // the same on every rank: every rank or none moves its own nodes
+  for (const double x : all)
+    out.push_back(static_cast<long>(x));
   return out;
 }
 
@@ -203,6 +219,7 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
       summary.rank_timing = rank_timing(world, result.timing);
       summary.rebalancing = {result.resplits, result.rank_shares, result.first_imbalance,
                              result.last_imbalance};
+      summary.moved_nodes = moved_nodes(world, result.moved_nodes);
     }
     if (files)
       files->finish();
@@ -318,6 +335,17 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
     }
     fmt::print(out, "ranks: loop seconds {} (rank 0 first), of which exchanges {}\n", loops,
                exchanges);
+    if (!summary.moved_nodes.empty()) {
+      std::string moved;
+      for (const long m : summary.moved_nodes)
+        moved += fmt::format("{}{}", moved.empty() ? "" : " / ", m);
+      fmt::print(out,
+                 "ranks: each rank moved its own nodes and its neighbours' around them: {} of {} "
+                 "nodes (rank 0 first)\n",
+                 moved, summary.nodes);
+    } else if (!result.every_node_moved_because.empty()) {
+      fmt::print(out, "ranks: every rank moved every node ({})\n", result.every_node_moved_because);
+    }
     const output::RunSummary::Rebalancing& b = summary.rebalancing;
     if (b.splits > 0) {
       std::string shares;

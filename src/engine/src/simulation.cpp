@@ -2170,6 +2170,12 @@ RunResult Simulation::run() {
         st.write_checkpoint(st.end_records);
     }
   }
+  if (st.ranks) {
+    res.moved_nodes = st.node_share ? st.node_share->nodes().size() : 0;
+    if (!st.node_share)
+      res.every_node_moved_because = st.contact ? "the contact's search reads every surface node"
+                                                : "the heat conduction reads every node";
+  }
   if (st.balance) {
     res.resplits = st.balance->splits();
     res.rank_shares = st.balance->shares();

@@ -161,6 +161,11 @@ std::string summary_json_text(const RunSummary& s) {
   out += ", \"last_imbalance\": ";
   append_number(out, s.rebalancing.last_imbalance);
   out += "},\n";
+  key("moved_nodes");
+  out += "[";
+  for (std::size_t i = 0; i < s.moved_nodes.size(); ++i)
+    fmt::format_to(std::back_inserter(out), "{}{}", i > 0 ? ", " : "", s.moved_nodes[i]);
+  out += "],\n";
   real("restarted_at", s.restarted_at);
   text("checkpoint", s.checkpoint);
   integer("thermal_steps", s.thermal_steps);

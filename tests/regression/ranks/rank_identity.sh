@@ -98,6 +98,16 @@ for model in plate/plate.k loads/plate.k punch/plate.k cup/square_cup_3.k draw/d
   echo "$name: 1, 2, 3 and 4 ranks compared, and 3 ranks split again $splits times"
 done
 
+# Where no pass reads every node each rank moves its own (summary.json's moved_nodes, one count
+# per rank, each below the model's nodes); under contact every rank moves every node (empty).
+moved=$(grep -o '"moved_nodes": \[[0-9, ]*\]' plate.2/summary.json | grep -o '\[.*\]')
+nodes=$(grep -o '"nodes": [0-9]*' plate.2/summary.json | head -n 1 | grep -o '[0-9]*$')
+python3 -c "import sys; m = $moved; sys.exit(0 if len(m) == 2 and all(0 < x < $nodes for x in m) else 1)" ||
+  { echo "FAIL: plate.2 moved_nodes $moved of $nodes"; failed=1; }
+grep -q '"moved_nodes": \[\]' punch.2/summary.json ||
+  { echo "FAIL: punch.2 moved_nodes not empty"; failed=1; }
+echo "moved nodes on 2 ranks: the plate $moved of $nodes, the punched plate every node"
+
 # An instability (the solid block's top face driven 100 times too far: its energy leaves the
 # band): on 3 ranks the run stops where the run on one rank stops, with its diagnosis and its
 # exit code 3, and no rank waits for the others.

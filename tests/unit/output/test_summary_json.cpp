@@ -264,6 +264,7 @@ RunSummary example_summary() {
   s.rank_timing = {{0, 12.0, {{"elements", 9.0}, {"ranks", 1.5}}},
                    {1, 11.5, {{"elements", 10.0}, {"ranks", 0.25}}}};
   s.rebalancing = {2, {0.375, 0.625}, 1.25, 1.0};
+  s.moved_nodes = {520, 530, 515};
   return s;
 }
 
@@ -288,6 +289,7 @@ TEST(SummaryJson, ExpectedText) {
   "threads": 2,
   "ranks": 3,
   "rebalancing": {"splits": 2, "shares": [0.375, 0.625], "first_imbalance": 1.25, "last_imbalance": 1},
+  "moved_nodes": [520, 530, 515],
   "restarted_at": null,
   "checkpoint": "",
   "thermal_steps": 0,
@@ -337,6 +339,9 @@ TEST(SummaryJson, ParsesBackToTheSameValues) {
   const auto& rebalancing = member(doc, "rebalancing");
   EXPECT_EQ(std::get<double>(member(rebalancing, "splits").value), 2.0);
   EXPECT_EQ(std::get<double>(member(rebalancing, "first_imbalance").value), 1.25);
+  const auto& moved = std::get<JsonArray>(member(doc, "moved_nodes").value);
+  ASSERT_EQ(moved.size(), 3u);
+  EXPECT_EQ(std::get<double>(moved[1].value), 530.0);
 }
 
 TEST(SummaryJson, ErrorStatusNonFiniteNumbersAndNoWarnings) {

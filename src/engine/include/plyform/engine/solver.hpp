@@ -179,6 +179,10 @@ struct RunResult {
   int resplits = 0;
   std::vector<double> rank_shares;
   double first_imbalance = 0.0, last_imbalance = 0.0;
+  /// Over several ranks: the nodes this rank moved at the end (each rank its own and a ring of
+  /// its neighbours', docs/parallel.md), or 0 where every rank moved every node, and then why.
+  std::size_t moved_nodes = 0;
+  std::string every_node_moved_because;
   /// Stopped on request (SolverOptions::stop) before the end time; a checkpoint was written.
   bool stopped = false;
   int checkpoints = 0;     ///< checkpoints written by this run

@@ -42,6 +42,9 @@ struct RunSummary {
     double first_imbalance = 0.0, last_imbalance = 0.0;
   };
   Rebalancing rebalancing;
+  /// Over several ranks, the nodes each rank moved (its own and a ring of its neighbours'),
+  /// rank by rank; empty where every rank moved every node. Written as `"moved_nodes": [...]`.
+  std::vector<long> moved_nodes;
   /// A restart: the time it continued from (NaN, written null: the run started at t = 0). The
   /// other fields cover the whole run, its parts before the restart included.
   double restarted_at = std::numeric_limits<double>::quiet_NaN();
