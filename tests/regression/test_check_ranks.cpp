@@ -52,6 +52,20 @@ TEST(CheckRanks, PrintsEachDomainAndTheSplitsFigures) {
   EXPECT_NE(text.find("contact slave nodes: 81 over 1 interface\n"), std::string::npos) << text;
   EXPECT_NE(text.find("run it so: mpirun -np 2 plyform run DECK -o OUTDIR"), std::string::npos)
       << text;
+  EXPECT_NE(text.find("nodes: every rank moves every node (the contact's search reads them all)"),
+            std::string::npos)
+      << text;
+}
+
+TEST(CheckRanks, SaysEachRankMovesItsOwnNodesWithoutContact) {
+  test::TempDir dir;
+  std::string plain = deck();
+  plain.erase(plain.find("*CONTACT_ONE_WAY"), plain.find("*END") - plain.find("*CONTACT_ONE_WAY"));
+  std::ostringstream out, err;
+  ASSERT_EQ(run_check(dir.write("layers.k", plain), out, err, 2), 0) << err.str();
+  EXPECT_NE(out.str().find("nodes: each rank moves its own and its neighbours' around them"),
+            std::string::npos)
+      << out.str();
 }
 
 TEST(RunRanks, RebalanceOnOneRankIsSaidToDoNothing) {

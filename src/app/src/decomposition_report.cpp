@@ -77,6 +77,15 @@ void print_decomposition(const core::Model& model, const domain::Decomposition& 
   fmt::print(out, "  contact slave nodes: {} over {} interface{}\n", slave_total, d.contact.size(),
              d.contact.size() == 1 ? "" : "s");
   // What a run over these ranks does with the split today (docs/parallel.md).
+  if (!model.contacts.empty() || model.thermal.enabled) {
+    fmt::print(out, "  nodes: every rank moves every node ({} reads them all)\n",
+               !model.contacts.empty() ? "the contact's search" : "the heat conduction");
+  } else {
+    fmt::print(out,
+               "  nodes: each rank moves its own and its neighbours' around them, and the "
+               "constrained, loaded, rigid, tied and walled nodes; the forces of those it does "
+               "not own from their owners\n");
+  }
   fmt::print(out,
              "  run it so: mpirun -np {} plyform run DECK -o OUTDIR (the element loop and the "
              "contact's slave nodes by these domains at first, split again while running as "
