@@ -1828,6 +1828,7 @@ bool Simulation::State::step_vote(double& dt_next) {
 // Velocities of the step to come, constraints, rigid bodies and the external work; false
 // (with the diagnosis) on a non-finite velocity.
 bool Simulation::State::velocities(double dt_next) {
+  nodes_whole = !node_share;  // the pass moves the nodes this rank moves, not the others
   work_external += advance_velocity(t, dt, dt_next, 0.5 * (dt + dt_next));
   fix_rotations();
   if (bad_velocities > 0.0) {
