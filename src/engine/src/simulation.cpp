@@ -2136,7 +2136,7 @@ RunResult Simulation::run() {
     bool stop = st.options.stop != nullptr && *st.options.stop != 0;
     // A signal reaches the ranks at different cycles: all stop at the same one (agreed in the
     // velocity pass where each rank moves its own nodes).
-    if (st.node_share && !st.thermal_only)
+    if (st.node_share)  // never with the heat, so never in a thermal-only run
       stop = st.stop_agreed;
     else if (st.ranks)
       stop = st.options.ranks->max(stop ? 1L : 0L) != 0;
