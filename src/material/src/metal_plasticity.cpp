@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "hardening.hpp"
+#include "plane_stress_batch.hpp"
 #include "plane_stress_trial.hpp"
 #include "plyform/material/strain_rate.hpp"
 
@@ -50,6 +51,29 @@ void rotate(double u, double v, double s, double* a) {
   a[3] = t11 * q21 + t12 * q22 + t13 * q23;
   a[4] = t21 * q31 + t22 * q32 + t23 * q33;
   a[5] = t31 * q11 + t32 * q12 + t33 * q13;
+}
+
+// The back stress (bx, by, bt) turned by the element's spin phi (Cayley form, as the element
+// turned the stresses; a point without spin keeps it as it is), and the shifted trial
+// eta = sigma - alpha with its squared equivalent stress, across SIMD lanes.
+void turn_back_stress(std::size_t n, const double* __restrict phi, const double* __restrict sxx,
+                      const double* __restrict syy, const double* __restrict sxy,
+                      double* __restrict bx, double* __restrict by, double* __restrict bt,
+                      double* __restrict ex, double* __restrict ey, double* __restrict et,
+                      double* __restrict psi2) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double half_sq = 0.25 * phi[i] * phi[i], inv = 1.0 / (1.0 + half_sq);
+    const double c = (1.0 - half_sq) * inv, sn = phi[i] * inv;
+    const double x = bx[i], y = by[i], t = bt[i];
+    const bool turn = phi[i] != 0.0;
+    bx[i] = turn ? c * c * x + sn * sn * y - 2.0 * c * sn * t : x;
+    by[i] = turn ? sn * sn * x + c * c * y + 2.0 * c * sn * t : y;
+    bt[i] = turn ? c * sn * (x - y) + (c * c - sn * sn) * t : t;
+    ex[i] = sxx[i] - bx[i];
+    ey[i] = syy[i] - by[i];
+    et[i] = sxy[i] - bt[i];
+    psi2[i] = ex[i] * ex[i] + ey[i] * ey[i] - ex[i] * ey[i] + 3.0 * et[i] * et[i];
+  }
 }
 
 }  // namespace
@@ -116,41 +140,40 @@ void shell_update(const core::PlasticKinematic& m, std::size_t n, const ShellPoi
   const double ep = plastic_modulus(m.young, m.etan);
   const double h_kin = (1.0 - m.beta) * ep, h_iso = m.beta * ep;
   const bool rate = m.src > 0.0 && m.srp > 0.0 && dt > 0.0;
-  for (std::size_t p = 0; p < n; ++p) {
-    double* ab = pts.history + 6 * p;  // xx, yy, (zz), xy: the solid's slots
-    if (pts.spin != nullptr && pts.spin[p] != 0.0) {
-      // The element turned the stresses by spin (Cayley form); the back stress turns with them.
-      const double phi = pts.spin[p];
-      const double half_sq = 0.25 * phi * phi, inv = 1.0 / (1.0 + half_sq);
-      const double c = (1.0 - half_sq) * inv, sn = phi * inv;
-      const double x = ab[0], y = ab[1], t = ab[3];
-      ab[0] = c * c * x + sn * sn * y - 2.0 * c * sn * t;
-      ab[1] = sn * sn * x + c * c * y + 2.0 * c * sn * t;
-      ab[3] = c * sn * (x - y) + (c * c - sn * sn) * t;
+  // The yielding points' returns are solved together (plane_stress_batch.hpp). Per block of
+  // points: the back stress turned and the shifted trial's equivalent stress across SIMD lanes,
+  // then the rate factors, then the yield test.
+  detail::KinematicPlaneStressBatch batch(a, b, nu_e, h_kin, pts.sxx, pts.syy, pts.sxy, pts.eps_p,
+                                          pts.dzz, pts.history);
+  constexpr std::size_t kBlock = 64;
+  double bx[kBlock], by[kBlock], bt[kBlock], phi[kBlock];
+  double ex[kBlock], ey[kBlock], et[kBlock], psi2[kBlock], k[kBlock];
+  for (std::size_t p0 = 0; p0 < n; p0 += kBlock) {
+    const std::size_t m_block = std::min(kBlock, n - p0);
+    for (std::size_t i = 0; i < m_block; ++i) {
+      const double* ab = pts.history + 6 * (p0 + i);  // xx, yy, (zz), xy: the solid's slots
+      bx[i] = ab[0];
+      by[i] = ab[1];
+      bt[i] = ab[3];
+      phi[i] = pts.spin != nullptr ? pts.spin[p0 + i] : 0.0;
     }
-    const double ex = pts.sxx[p] - ab[0], ey = pts.syy[p] - ab[1], et = pts.sxy[p] - ab[3];
-    const double psi2 = ex * ex + ey * ey - ex * ey + 3.0 * et * et;
-    const double k = rate ? cowper_symonds_factor(m, shell_strain_rate(pts, p, dt)) : 1.0;
-    const detail::LinearHardening h{k * m.sigy, k * h_iso};
-    const double sy_n = h.value(pts.eps_p[p]);
-    if (!(psi2 > sy_n * sy_n))
-      continue;
-    const double p_tr = ex + ey, q_tr = ex - ey;
-    const double big_a = 0.25 * p_tr * p_tr;
-    const double big_b = 0.75 * q_tr * q_tr + 3.0 * et * et;
-    const double g = detail::plane_stress_return(h, a + h_kin, b + h_kin, big_a, big_b,
-                                                 pts.eps_p[p], std::sqrt(psi2), sy_n);
-    const double ua = 1.0 / (1.0 + (a + h_kin) * g), ub = 1.0 / (1.0 + (b + h_kin) * g);
-    const double pe = p_tr * ua, qe = q_tr * ub, te = et * ub;  // eta at the end of the step
-    const double dp = -a * g * pe;                              // the stress's change in p
-    pts.sxx[p] += 0.5 * (dp - b * g * qe);
-    pts.syy[p] += 0.5 * (dp + b * g * qe);
-    pts.sxy[p] -= b * g * te;
-    ab[0] += 0.5 * h_kin * g * (pe + qe);
-    ab[1] += 0.5 * h_kin * g * (pe - qe);
-    ab[3] += h_kin * g * te;
-    pts.eps_p[p] += g * std::sqrt(big_a * ua * ua + big_b * ub * ub);
-    pts.dzz[p] += -nu_e * dp - 0.5 * g * pe;
+    turn_back_stress(m_block, phi, pts.sxx + p0, pts.syy + p0, pts.sxy + p0, bx, by, bt, ex, ey, et,
+                     psi2);
+    for (std::size_t i = 0; i < m_block; ++i) {
+      double* ab = pts.history + 6 * (p0 + i);
+      ab[0] = bx[i];
+      ab[1] = by[i];
+      ab[3] = bt[i];
+    }
+    for (std::size_t i = 0; i < m_block; ++i)
+      k[i] = rate ? cowper_symonds_factor(m, shell_strain_rate(pts, p0 + i, dt)) : 1.0;
+    for (std::size_t i = 0; i < m_block; ++i) {
+      const std::size_t p = p0 + i;
+      const detail::LinearHardening h{k[i] * m.sigy, k[i] * h_iso};
+      const double sy_n = h.value(pts.eps_p[p]);
+      if (psi2[i] > sy_n * sy_n)
+        batch.add(p, h.sigy, h.hp, ex[i] + ey[i], ex[i] - ey[i], et[i], std::sqrt(psi2[i]));
+    }
   }
 }
 

@@ -7,7 +7,9 @@
 // its own stopping rule holds, so its result does not depend on which points share its batch
 // (the same bits on any thread count or chunking). A point not converged after kSweeps sweeps
 // (large increments on rare steps) finishes with the scalar safeguarded solver from its bracket.
-// Private to plyform_material.
+// LinearPlaneStressLanes solves; LinearPlaneStressBatch (J2, *MAT_024 and *MAT_004) and
+// KinematicPlaneStressBatch (*MAT_003's mixed hardening, metal_plasticity.cpp) write their laws'
+// results back. Private to plyform_material.
 
 #include <algorithm>
 #include <cmath>
@@ -17,52 +19,39 @@
 
 namespace plyform::material::detail {
 
-class LinearPlaneStressBatch {
+// The lockstep solve of up to kSize points' scalar equations; the derived batches add points
+// and write the results back.
+class LinearPlaneStressLanes {
  public:
   static constexpr std::size_t kSize = 32;
   static constexpr int kSweeps = 4;
 
-  /// The point's arrays the results go back to (indexed by the point numbers given to add).
-  LinearPlaneStressBatch(double* sxx, double* syy, double* sxy, double* eps_p, double* dzz)
-      : sxx_(sxx), syy_(syy), sxy_(sxy), eps_p_(eps_p), dzz_(dzz) {}
-  LinearPlaneStressBatch(const LinearPlaneStressBatch&) = delete;
-  LinearPlaneStressBatch& operator=(const LinearPlaneStressBatch&) = delete;
-  ~LinearPlaneStressBatch() { flush(); }
-
-  /// A point whose trial stress (p_tr = sxx + syy, q_tr = sxx - syy, t) lies outside its yield
-  /// surface sigma_y = sy0 + hp eps_p; young and nu its elastic constants. Solves the batch when
-  /// it is full.
-  void add(std::size_t point, double young, double nu, double sy0, double hp, double p_tr,
-           double q_tr, double t, double psi_tr) {
+ protected:
+  // Point i's equation: a, b the return's moduli, the yield curve sy0 + hp eps_p, the plastic
+  // strain at the start e_n, the trial (p_tr, q_tr, t) and its equivalent stress psi_tr.
+  std::size_t push(double a, double b, double sy0, double hp, double e_n, double p_tr, double q_tr,
+                   double t, double psi_tr) {
     const std::size_t i = n_++;
-    index_[i] = point;
-    a_[i] = 0.5 * young / (1.0 - nu);
-    b_[i] = 1.5 * young / (1.0 + nu);
-    nu_e_[i] = nu / young;
+    a_[i] = a;
+    b_[i] = b;
     sy0_[i] = sy0;
     hp_[i] = hp;
-    e_n_[i] = eps_p_[point];
+    e_n_[i] = e_n;
     p_tr_[i] = p_tr;
     q_tr_[i] = q_tr;
     t_tr_[i] = t;
     psi_tr_[i] = psi_tr;
-    if (n_ == kSize)
-      flush();
+    return i;
   }
 
-  /// Solves the points gathered so far and writes their stresses, plastic strain and thickness
-  /// strain back.
-  void flush() {
-    if (n_ == 0)
-      return;
+  /// gamma of every point pushed (g_).
+  void solve() {
     start();
     bool converged = false;
     for (int sweep = 0; sweep < kSweeps && !converged; ++sweep)
       converged = newton_sweep();
     if (!converged)
       finish_scalar();
-    write_back();
-    n_ = 0;
   }
 
  private:
@@ -128,6 +117,46 @@ class LinearPlaneStressBatch {
     }
   }
 
+ protected:
+  std::size_t n_ = 0;
+  double a_[kSize], b_[kSize], sy0_[kSize], hp_[kSize], e_n_[kSize];
+  double p_tr_[kSize], q_tr_[kSize], t_tr_[kSize], psi_tr_[kSize];
+  double big_a_[kSize], big_b_[kSize], lo_[kSize], hi_[kSize], g_[kSize], done_[kSize];
+};
+
+class LinearPlaneStressBatch : private LinearPlaneStressLanes {
+ public:
+  /// The point's arrays the results go back to (indexed by the point numbers given to add).
+  LinearPlaneStressBatch(double* sxx, double* syy, double* sxy, double* eps_p, double* dzz)
+      : sxx_(sxx), syy_(syy), sxy_(sxy), eps_p_(eps_p), dzz_(dzz) {}
+  LinearPlaneStressBatch(const LinearPlaneStressBatch&) = delete;
+  LinearPlaneStressBatch& operator=(const LinearPlaneStressBatch&) = delete;
+  ~LinearPlaneStressBatch() { flush(); }
+
+  /// A point whose trial stress (p_tr = sxx + syy, q_tr = sxx - syy, t) lies outside its yield
+  /// surface sigma_y = sy0 + hp eps_p; young and nu its elastic constants. Solves the batch when
+  /// it is full.
+  void add(std::size_t point, double young, double nu, double sy0, double hp, double p_tr,
+           double q_tr, double t, double psi_tr) {
+    const std::size_t i = push(0.5 * young / (1.0 - nu), 1.5 * young / (1.0 + nu), sy0, hp,
+                               eps_p_[point], p_tr, q_tr, t, psi_tr);
+    index_[i] = point;
+    nu_e_[i] = nu / young;
+    if (n_ == kSize)
+      flush();
+  }
+
+  /// Solves the points gathered so far and writes their stresses, plastic strain and thickness
+  /// strain back.
+  void flush() {
+    if (n_ == 0)
+      return;
+    solve();
+    write_back();
+    n_ = 0;
+  }
+
+ private:
   // The backward-Euler stress at gamma (shell.cpp's plane_stress_return_kernel says why),
   // computed across the batch, then scattered to the points.
   void write_back() {
@@ -157,11 +186,77 @@ class LinearPlaneStressBatch {
   double* sxy_;
   double* eps_p_;
   double* dzz_;
-  std::size_t n_ = 0;
   std::size_t index_[kSize];
-  double a_[kSize], b_[kSize], nu_e_[kSize], sy0_[kSize], hp_[kSize], e_n_[kSize];
-  double p_tr_[kSize], q_tr_[kSize], t_tr_[kSize], psi_tr_[kSize];
-  double big_a_[kSize], big_b_[kSize], lo_[kSize], hi_[kSize], g_[kSize], done_[kSize];
+  double nu_e_[kSize];
+};
+
+// *MAT_003's mixed hardening (metal_plasticity.cpp says why this is the J2 return of the shifted
+// stress eta = sigma - alpha with a + H, b + H): the points' gammas solved together, the stress,
+// back stress (xx, yy, xy in the history's slots 0, 1, 3), plastic strain and thickness strain
+// written back per point by the scalar return's own formulas.
+class KinematicPlaneStressBatch : private LinearPlaneStressLanes {
+ public:
+  /// a, b: the elastic return moduli E / (2 (1 - nu)), 3 G; h_kin: (1 - BETA) E_p; history: the
+  /// points' six back-stress slots each.
+  KinematicPlaneStressBatch(double a, double b, double nu_e, double h_kin, double* sxx, double* syy,
+                            double* sxy, double* eps_p, double* dzz, double* history)
+      : a_el_(a),
+        b_el_(b),
+        nu_e_(nu_e),
+        h_kin_(h_kin),
+        sxx_(sxx),
+        syy_(syy),
+        sxy_(sxy),
+        eps_p_(eps_p),
+        dzz_(dzz),
+        history_(history) {}
+  KinematicPlaneStressBatch(const KinematicPlaneStressBatch&) = delete;
+  KinematicPlaneStressBatch& operator=(const KinematicPlaneStressBatch&) = delete;
+  ~KinematicPlaneStressBatch() { flush(); }
+
+  /// A point whose shifted trial (p_tr, q_tr, t of eta) lies outside sigma_y = sy0 + hp eps_p.
+  void add(std::size_t point, double sy0, double hp, double p_tr, double q_tr, double t,
+           double psi_tr) {
+    const std::size_t i =
+        push(a_el_ + h_kin_, b_el_ + h_kin_, sy0, hp, eps_p_[point], p_tr, q_tr, t, psi_tr);
+    index_[i] = point;
+    if (n_ == kSize)
+      flush();
+  }
+
+  void flush() {
+    if (n_ == 0)
+      return;
+    solve();
+    const double a = a_el_, b = b_el_, h = h_kin_;
+    for (std::size_t i = 0; i < n_; ++i) {
+      const std::size_t p = index_[i];
+      double* ab = history_ + 6 * p;
+      const double g = g_[i];
+      const double ua = 1.0 / (1.0 + a_[i] * g), ub = 1.0 / (1.0 + b_[i] * g);
+      const double pe = p_tr_[i] * ua, qe = q_tr_[i] * ub, te = t_tr_[i] * ub;  // eta at the end
+      const double dp = -a * g * pe;  // the stress's change in p
+      sxx_[p] += 0.5 * (dp - b * g * qe);
+      syy_[p] += 0.5 * (dp + b * g * qe);
+      sxy_[p] -= b * g * te;
+      ab[0] += 0.5 * h * g * (pe + qe);
+      ab[1] += 0.5 * h * g * (pe - qe);
+      ab[3] += h * g * te;
+      eps_p_[p] += g * std::sqrt(big_a_[i] * ua * ua + big_b_[i] * ub * ub);
+      dzz_[p] += -nu_e_ * dp - 0.5 * g * pe;
+    }
+    n_ = 0;
+  }
+
+ private:
+  double a_el_, b_el_, nu_e_, h_kin_;
+  double* sxx_;
+  double* syy_;
+  double* sxy_;
+  double* eps_p_;
+  double* dzz_;
+  double* history_;
+  std::size_t index_[kSize];
 };
 
 }  // namespace plyform::material::detail

@@ -8,41 +8,19 @@
 
 #include "hardening.hpp"
 #include "plane_stress_batch.hpp"
+#include "plane_stress_trial.hpp"
 #include "plyform/material/strain_rate.hpp"
 #include "plyform/material/thermal_plasticity.hpp"
 
 namespace plyform::material {
 
 // ---------------------------------------------------------------------------------------------
-// Isotropic plane stress. The elastic step (one vectorised pass) is shared by the elastic law and
-// the trial of the plastic laws:
+// Isotropic plane stress. The elastic step (one vectorised pass, plane_stress_trial.hpp) is shared
+// by the elastic law and the trial of the plastic laws:
 //   d sxx = E/(1 - nu^2) (dxx + nu dyy), d syy = E/(1 - nu^2) (dyy + nu dxx), d sxy = 2 G dxy,
 //   d syz = 2 G dyz, d szx = 2 G dzx, dzz = -nu/(1 - nu) (dxx + dyy) = -(nu/E)(d sxx + d syy).
 // ---------------------------------------------------------------------------------------------
 namespace {
-
-void plane_stress_elastic_kernel(std::size_t n, double c11, double c12, double two_g, double nu_zz,
-                                 const double* __restrict dxx, const double* __restrict dyy,
-                                 const double* __restrict dxy, const double* __restrict dyz,
-                                 const double* __restrict dzx, double* __restrict sxx,
-                                 double* __restrict syy, double* __restrict sxy,
-                                 double* __restrict syz, double* __restrict szx,
-                                 double* __restrict dzz) {
-  for (std::size_t p = 0; p < n; ++p) {
-    sxx[p] += c11 * dxx[p] + c12 * dyy[p];
-    syy[p] += c12 * dxx[p] + c11 * dyy[p];
-    sxy[p] += two_g * dxy[p];
-    syz[p] += two_g * dyz[p];
-    szx[p] += two_g * dzx[p];
-    dzz[p] = -nu_zz * (dxx[p] + dyy[p]);
-  }
-}
-
-void plane_stress_elastic(double young, double nu, std::size_t n, const ShellPoints& s) {
-  const double c11 = young / (1.0 - nu * nu);
-  plane_stress_elastic_kernel(n, c11, nu * c11, young / (1.0 + nu), nu / (1.0 - nu), s.dxx, s.dyy,
-                              s.dxy, s.dyz, s.dzx, s.sxx, s.syy, s.sxy, s.syz, s.szx, s.dzz);
-}
 
 // Plane-stress J2 return (Simo-Taylor), per point after the elastic trial. In p = sxx + syy,
 // q = sxx - syy, t = sxy the plane-stress elasticity and the flow d eps^p = dlam 3/2 s / sigma_eq
@@ -106,7 +84,7 @@ template <class Law>
 void shell_j2(const Law& m, std::size_t n, const ShellPoints& s) {
   // The rates read the increments, which the trial leaves as they are (it overwrites dzz,
   // which the rate does not read).
-  plane_stress_elastic(m.young, m.poisson, n, s);
+  detail::plane_stress_trial(m.young, m.poisson, n, s);
   const auto kernel = [&](const auto& hardening) {
     plane_stress_return_kernel(hardening, m.young, m.poisson, n, s.sxx, s.syy, s.sxy, s.eps_p,
                                s.dzz);
@@ -177,7 +155,7 @@ void orthotropic_kernel(std::size_t n, OrthoConstants k, const double* __restric
 }  // namespace
 
 void shell_update(const core::ElasticMaterial& m, std::size_t n, const ShellPoints& pts) {
-  plane_stress_elastic(m.young, m.poisson, n, pts);
+  detail::plane_stress_trial(m.young, m.poisson, n, pts);
 }
 
 void shell_update(const core::PiecewiseLinearPlasticity& m, std::size_t n, const ShellPoints& pts) {
@@ -198,7 +176,7 @@ class ThermalConstantsMemo {
  public:
   struct Entry {
     double young, nu, sigy, hardening;  // constants_at's
-    double c11, c12, two_g, nu_zz;      // the elastic trial's (plane_stress_elastic's)
+    double c11, c12, two_g, nu_zz;      // the elastic trial's (plane_stress_trial's)
   };
   explicit ThermalConstantsMemo(const core::ElasticPlasticThermal& m) : m_(m) {}
   const Entry& at(double t) {

@@ -215,6 +215,93 @@ TEST(PlasticKinematic, SolidBackStressTurnsWithTheStress) {
   EXPECT_GT(std::abs(p.back[3]), 1.0);  // the back stress turned off the axes
 }
 
+// Shells: a pure spin turns the back stress as the element turned the stress (by the Cayley
+// angle 2 atan(phi / 2)): the relative stress keeps its invariant, the point stays on the yield
+// surface and no plastic strain grows.
+TEST(PlasticKinematic, ShellBackStressTurnsWithTheStress) {
+  const core::PlasticKinematic m = kinematic(0.0);
+  Point p;
+  for (int i = 0; i < 100; ++i)
+    uniaxial_step(p, 1e-4, [&](Point& q, double dx, double dl) { shell_step(m, q, dx, dl); });
+  const double e0 = p.eps_p;
+  const double phi = 0.05, angle = 2.0 * std::atan(0.5 * phi);
+  const double c = std::cos(angle), sn = std::sin(angle);
+  const std::array<double, 5> d{};
+  double dzz = 0.0;
+  for (int i = 0; i < 20; ++i) {
+    const double x = p.s[0], y = p.s[1], t = p.s[2];  // the element's turn of the stress
+    p.s[0] = c * c * x + sn * sn * y - 2.0 * c * sn * t;
+    p.s[1] = sn * sn * x + c * c * y + 2.0 * c * sn * t;
+    p.s[2] = c * sn * (x - y) + (c * c - sn * sn) * t;
+    ShellPoints pts{&d[0],   &d[1],   &d[2],   &d[3],   &d[4],    &p.s[0],
+                    &p.s[1], &p.s[2], &p.s[3], &p.s[4], &p.eps_p, &dzz};
+    pts.history = p.back.data();
+    pts.spin = &phi;
+    shell_update(m, 1, pts, 0.0);
+  }
+  EXPECT_EQ(p.eps_p, e0);
+  // The shell's back stress: xx, yy, xy in the slots 0, 1, 3.
+  const double ex = p.s[0] - p.back[0], ey = p.s[1] - p.back[1], et = p.s[2] - p.back[3];
+  EXPECT_NEAR(std::sqrt(ex * ex + ey * ey - ex * ey + 3.0 * et * et), kSigy, 1e-9 * kSigy);
+  EXPECT_NEAR(std::atan2(2.0 * p.back[3], p.back[0] - p.back[1]), 2.0 * 20.0 * angle, 1e-10);
+}
+
+// Many points in one call (the element passes a chunk's points at once; the yielding ones are
+// solved together in batches) give each point exactly what it gives alone: a point's result does
+// not depend on the points beside it, so none depends on the chunking or the thread count.
+TEST(PlasticKinematic, ShellPointsInOneCallGiveWhatEachGivesAlone) {
+  const core::PlasticKinematic m = kinematic(0.3);
+  constexpr std::size_t kN = 150;  // several blocks and batches, elastic and plastic points
+  std::array<double, kN> dxx{}, dyy{}, dxy{}, dyz{}, dzx{}, spin{};
+  std::vector<Point> all(kN);
+  for (std::size_t i = 0; i < kN; ++i) {
+    const double u = static_cast<double>(i) / kN;
+    dxx[i] = 2e-3 * std::sin(7.0 * u) * (i % 3 == 0 ? 0.1 : 1.0);
+    dyy[i] = 1e-3 * std::cos(5.0 * u);
+    dxy[i] = 5e-4 * std::sin(11.0 * u);
+    spin[i] = i % 4 == 0 ? 0.0 : 0.01 * std::cos(3.0 * u);
+    all[i].s = {150.0 * u, -80.0 * u, 40.0 * u, 0.0, 0.0, 0.0};  // shell_step's layout
+    all[i].back = {30.0 * u, -10.0 * u, 0.0, 5.0 * u, 0.0, 0.0};
+    all[i].eps_p = 0.01 * u;
+  }
+  std::vector<Point> alone = all;
+  // In one call: the fields as the element lays them out, one array each.
+  std::array<double, kN> sxx{}, syy{}, sxy{}, syz{}, szx{}, eps_p{}, dzz{};
+  std::vector<double> history(6 * kN);
+  for (std::size_t i = 0; i < kN; ++i) {
+    sxx[i] = all[i].s[0];
+    syy[i] = all[i].s[1];
+    sxy[i] = all[i].s[2];
+    eps_p[i] = all[i].eps_p;
+    std::copy(all[i].back.begin(), all[i].back.end(), history.begin() + 6 * i);
+  }
+  ShellPoints pts{dxx.data(), dyy.data(), dxy.data(), dyz.data(), dzx.data(),   sxx.data(),
+                  syy.data(), sxy.data(), syz.data(), szx.data(), eps_p.data(), dzz.data()};
+  pts.history = history.data();
+  pts.spin = spin.data();
+  shell_update(m, kN, pts, 0.0);
+  std::size_t plastic = 0;
+  for (std::size_t i = 0; i < kN; ++i) {
+    Point& q = alone[i];
+    double dzz_alone = 0.0;
+    ShellPoints one{&dxx[i], &dyy[i], &dxy[i], &dyz[i], &dzx[i],  &q.s[0],
+                    &q.s[1], &q.s[2], &q.s[3], &q.s[4], &q.eps_p, &dzz_alone};
+    one.history = q.back.data();
+    one.spin = &spin[i];
+    shell_update(m, 1, one, 0.0);
+    plastic += q.eps_p > all[i].eps_p ? 1 : 0;
+    EXPECT_EQ(sxx[i], q.s[0]) << i;
+    EXPECT_EQ(syy[i], q.s[1]) << i;
+    EXPECT_EQ(sxy[i], q.s[2]) << i;
+    EXPECT_EQ(eps_p[i], q.eps_p) << i;
+    EXPECT_EQ(dzz[i], dzz_alone) << i;
+    for (std::size_t k = 0; k < 6; ++k)
+      EXPECT_EQ(history[6 * i + k], q.back[k]) << i << " slot " << k;
+  }
+  EXPECT_GT(plastic, kN / 4);
+  EXPECT_LT(plastic, kN);
+}
+
 // Cowper-Symonds: perfectly plastic (ETAN 0) in isochoric extension d = r (1, -1/2, -1/2)
 // (sqrt(D : D) = r sqrt(3/2); the shell's D_zz = -(D_xx + D_yy) makes it the same); the flow
 // stress is SIGY (1 + (r sqrt(3/2) / C)^(1/P)).
