@@ -19,6 +19,7 @@
 #include "boundary_conditions.hpp"
 #include "deterministic_sum.hpp"
 #include "initial_shell_stress.hpp"
+#include "item_shares.hpp"
 #include "mass.hpp"
 #include "node_share.hpp"
 #include "output_clocks.hpp"
@@ -230,6 +231,7 @@ struct Simulation::State {
   // ---- Timing (pass_clock.hpp) -----------------------------------------------------------------
   PassClock clock;
   std::vector<double> item_seconds;  // each element work item's seconds on its thread
+  ItemShares item_shares;            // which thread computes which items (item_shares.hpp)
 
   // ---- Scratch of one pass -------------------------------------------------------------------
   std::vector<ItemResult> item_results;
@@ -745,25 +747,33 @@ void Simulation::State::internal(double dt_step) {
                                     plastic_work.empty() ? nullptr : plastic_work.data()};
   const element::NodalMoments moments{s.mx.data(), s.my.data(), s.mz.data()};
   const element::NodalSpin spin{s.wx.data(), s.wy.data(), s.wz.data()};
+  // Each thread its run of each phase's items (item_shares.hpp), cut by the items' seconds.
 #pragma omp parallel proc_bind(close)
   {
+#ifdef _OPENMP
+    const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+    const auto me = static_cast<std::size_t>(omp_get_thread_num());
+#else
+    const std::size_t threads = 1, me = 0;
+#endif
+#pragma omp single
+    {
+      if (item_shares.threads() != threads)
+        item_shares.reset(phase_offset, threads);
+    }
     for (std::size_t p = 0; p < phases.size(); ++p) {
       const std::vector<WorkItem>& phase = phases[p];
-      // Static: each thread takes the same items every cycle, so an element's state and its
-      // nodes' forces stay in that thread's core's caches. With items handed out as threads
-      // came free (dynamic), every cycle moved them between cores, and on this project's
-      // machine, whose cores pass cache lines slowly, the 100 x 100 BT plate ran slower on two
-      // threads than on one (speed-up 0.86; static: 1.82-1.84).
-#pragma omp for schedule(static)
-      for (long w = 0; w < static_cast<long>(phase.size()); ++w) {
-        const WorkItem& it = phase[static_cast<std::size_t>(w)];
-        const std::size_t at = phase_offset[p] + static_cast<std::size_t>(w);
+      for (std::size_t w = item_shares.first(p, me); w < item_shares.last(p, me); ++w) {
+        const std::size_t at = phase_offset[p] + w;
         core::Stopwatch item_clock;
-        item_results[at] = run_item(it, dt_step, forces, moments, spin);
+        item_results[at] = run_item(phase[w], dt_step, forces, moments, spin);
         item_seconds[at] += item_clock.lap();
       }
+      // The next phase's items may share nodes with this one's.
+#pragma omp barrier
     }
   }
+  item_shares.update(item_seconds);
   InternalResult r;
   for (auto& power : shell_power)
     power = {};
