@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "contact_search.hpp"
 #include "kinematics.hpp"
 #include "pass_runtime.hpp"
@@ -19,8 +23,28 @@ namespace plyform::contact {
 void ContactSet::apply(double t, double dt, const double* packed, const double* temperature,
                        double* fx, double* fy, double* fz) {
   ++applies_;
-  active_.assign(passes_.size(), 0);
-  for (std::size_t ip = 0; ip < passes_.size(); ++ip) {
+  const std::size_t np = passes_.size();
+  active_.assign(np, 0);
+  pass_shared_.assign(np, 0.0);
+  pass_searches_.assign(np, 0);
+  // The passes' kinematics, law and forces read and write only their own state: where there
+  // are several and their costs can be shared out evenly over the threads (a sandwich's
+  // interfaces and tools), each runs whole on one thread, dearest first (their own loops then
+  // run on that thread alone); otherwise one after the other, each loop over the threads. Each
+  // pass's numbers are the same either way (its loops give the same bits on any thread count),
+  // and the scatter below stays in pass order.
+  const bool concurrent = passes_in_parallel();
+  // Side by side, the passes' seconds overlap: each is booked its share of the wall time they
+  // took together (the timing table's shares add up to the loop).
+  core::Stopwatch together;
+  if (concurrent) {
+    seconds_before_.resize(4 * np);
+    for (std::size_t ip = 0; ip < np; ++ip)
+      std::copy_n(passes_[ip]->seconds, 4, &seconds_before_[4 * ip]);
+  }
+#pragma omp parallel for schedule(dynamic, 1) if (concurrent)
+  for (long li = 0; li < static_cast<long>(np); ++li) {
+    const std::size_t ip = pass_order_[static_cast<std::size_t>(li)];
     PassRuntime& pr = *passes_[ip];
     // Over several ranks this rank runs the kinematics, the law and the forces of its slave
     // nodes (pr.mine); the rest runs whole.
@@ -58,7 +82,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     if (!pr.st.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
         (interval > 0 && pr.st.cycles_since_search >= interval)) {
       search(pr, packed, mass_, rigid_, rot_, tssfac_);
-      ++searches_;
+      ++pass_searches_[ip];
     }
     pr.seconds[0] += clock.lap();
 
@@ -85,7 +109,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
     lap = clock.lap();
     pr.seconds[1] += lap;
-    shared_seconds_ += lap;
+    pass_shared_[ip] += lap;
     law::BatchInput in;
     in.count = ns;
     in.gap = pr.st.gap.data();
@@ -139,7 +163,7 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
 
     lap = clock.lap();
     pr.seconds[2] += lap;
-    shared_seconds_ += lap;
+    pass_shared_[ip] += lap;
     // Forces from the tractions, and the second half of the step's work.
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
     for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
@@ -169,8 +193,27 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     }
     lap = clock.lap();
     pr.seconds[3] += lap;
-    shared_seconds_ += lap;
+    pass_shared_[ip] += lap;
     active_[ip] = 1;
+  }
+  if (concurrent) {
+    const double wall = together.lap();
+    double spent = 0.0;
+    for (std::size_t ip = 0; ip < np; ++ip)
+      for (std::size_t j = 0; j < 4; ++j)
+        spent += passes_[ip]->seconds[j] - seconds_before_[4 * ip + j];
+    const double share = spent > 0.0 ? wall / spent : 0.0;
+    for (std::size_t ip = 0; ip < np; ++ip) {
+      for (std::size_t j = 0; j < 4; ++j) {
+        double& sec = passes_[ip]->seconds[j];
+        sec = seconds_before_[4 * ip + j] + share * (sec - seconds_before_[4 * ip + j]);
+      }
+      pass_shared_[ip] *= share;
+    }
+  }
+  for (std::size_t ip = 0; ip < np; ++ip) {
+    shared_seconds_ += pass_shared_[ip];
+    searches_ += pass_searches_[ip];
   }
 
   // Over several ranks: what the scatter and the books read of every pass's slave nodes, from
@@ -260,6 +303,48 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     std::swap(pr.st.prev_shape, pr.st.shape);
     pr.seconds[3] += clock.lap();
   }
+}
+
+// Whether apply() runs its passes side by side (above): two threads or more, two live passes
+// or more, and no pass dearer than a thread's even share of them all (by the seconds each has
+// taken so far; by slave nodes before any are measured). Orders the passes dearest first when
+// it does, in their own order otherwise.
+bool ContactSet::passes_in_parallel() {
+  const std::size_t np = passes_.size();
+  pass_order_.resize(np);
+  for (std::size_t ip = 0; ip < np; ++ip)
+    pass_order_[ip] = ip;
+#ifdef _OPENMP
+  const auto threads = static_cast<double>(omp_get_max_threads());
+  const bool nested = omp_in_parallel() != 0;
+#else
+  const double threads = 1.0;
+  const bool nested = false;
+#endif
+  if (threads < 2.0 || np < 2 || nested)
+    return false;
+  pass_cost_.assign(np, 0.0);
+  double total = 0.0, largest = 0.0, measured = 0.0;
+  for (std::size_t ip = 0; ip < np; ++ip)
+    for (const double sec : passes_[ip]->seconds)
+      measured += sec;
+  for (std::size_t ip = 0; ip < np; ++ip) {
+    const PassRuntime& pr = *passes_[ip];
+    double cost = 0.0;
+    if (measured > 0.0)
+      for (const double sec : pr.seconds)
+        cost += sec;
+    else
+      cost = static_cast<double>(pr.pass->slave_count());
+    pass_cost_[ip] = cost;
+    total += cost;
+    largest = std::max(largest, cost);
+  }
+  if (!(total > 0.0) || largest > total / threads)
+    return false;
+  std::stable_sort(pass_order_.begin(), pass_order_.end(),
+                   [&](std::size_t a, std::size_t b) { return pass_cost_[a] > pass_cost_[b]; });
+  return true;
 }
 
 }  // namespace plyform::contact

@@ -12,7 +12,8 @@ vtk       runs DECK; VTK's own reader (python3-vtk9 of Debian) reads every resul
           state, all present; each state's points are the deck's *NODE coordinates plus the
           displacement; the displacement and velocity of every history node equal nodout.csv's
           at the same time (the deck writes states and nodout on one interval).
-threads   runs DECK with --threads 1 and --threads 2: nodout.csv and glstat.csv byte-identical.
+threads   runs DECK with --threads 1 and --threads 2: every history (.csv) and state (.vtu, .pvd)
+          file byte-identical.
 sleout    runs DECK (a plate thrown onto a rigid plate with friction): sleout.csv has one row
           per interface and output; its energy is the interface's work of interface_energy.csv
           and the interfaces' sum is glstat's contact energy at the same time (the same books,
@@ -165,13 +166,18 @@ def mode_threads(plyform, deck, outdir):
         if not check(p.returncode == 0, f"--threads {threads} exited {p.returncode}: {p.stderr}"):
             return 1
         out[threads] = d
-    for name in ("nodout.csv", "glstat.csv"):
+    # Every history and state file (summary.json holds the wall times).
+    names = sorted(n for n in os.listdir(out[1]) if n.endswith((".csv", ".vtu", ".pvd")))
+    check("nodout.csv" in names and "glstat.csv" in names, f"no nodout.csv or glstat.csv: {names}")
+    for name in names:
         with open(os.path.join(out[1], name), "rb") as a, open(os.path.join(out[2], name),
                                                                 "rb") as b:
             da, db = a.read(), b.read()
-        check(len(da.splitlines()) > 10, f"{name}: too few lines")
+        if name in ("nodout.csv", "glstat.csv"):
+            check(len(da.splitlines()) > 10, f"{name}: too few lines")
         check(da == db, f"{name} differs between 1 and 2 threads")
-    print("check_run.py threads: nodout.csv and glstat.csv identical with 1 and 2 threads")
+    print(f"check_run.py threads: {len(names)} files identical with 1 and 2 threads "
+          f"({', '.join(n for n in names if n.endswith('.csv'))})")
     return 0
 
 

@@ -201,8 +201,14 @@ class ContactSet {
   // apply() calls ran, and at which gather_state() last brought the state home.
   std::vector<std::unique_ptr<SlaveShare>> shares_;
   std::vector<unsigned char> active_;  // apply(): the passes in their birth-death window
-  double exchange_seconds_ = 0.0;      // apply()'s exchange over the ranks
-  double shared_seconds_ = 0.0;        // apply()'s work per slave node (shared_seconds())
+  // apply(): whether, and in which order, the passes run side by side (passes_in_parallel());
+  // per pass, its seconds so far, and this cycle's shared seconds and searches.
+  bool passes_in_parallel();
+  std::vector<std::size_t> pass_order_;
+  std::vector<double> pass_cost_, pass_shared_, seconds_before_;
+  std::vector<long> pass_searches_;
+  double exchange_seconds_ = 0.0;  // apply()'s exchange over the ranks
+  double shared_seconds_ = 0.0;    // apply()'s work per slave node (shared_seconds())
   long applies_ = 0;
   long gathered_at_ = 0;
 };
