@@ -20,6 +20,163 @@
 
 namespace plyform::contact {
 
+// One pass's search, kinematics, law and forces (apply() runs the passes one after the other or
+// side by side): what it reads and writes is its own, and this cycle's booked seconds and
+// searches go to its slots of pass_shared_ and pass_searches_.
+void ContactSet::apply_pass(std::size_t ip, double t, double dt, const double* packed,
+                            const double* temperature) {
+  PassRuntime& pr = *passes_[ip];
+  // Over several ranks this rank runs the kinematics, the law and the forces of its slave
+  // nodes (pr.mine); the rest runs whole.
+  const unsigned char* mine = pr.mine;
+  const core::ContactPass& cp = *pr.pass;
+  const std::size_t ns = cp.slave_count();
+  if (t < pr.iface->birth || t > pr.iface->death) {
+    pr.st.resultant = {0.0, 0.0, 0.0};
+    pr.st.master_resultant = {0.0, 0.0, 0.0};
+    std::fill(pr.st.prev_seg.begin(), pr.st.prev_seg.end(), -1);
+    pr.st.dt_last = 0.0;
+    // An interface that is not there does not set the step; it searches (and votes) anew
+    // once it is.
+    pr.st.dt_vote = kInf;
+    pr.st.searched = false;
+    return;
+  }
+  core::Stopwatch clock;
+  if (cp.offsets_follow_thickness && !shell_thickness_.empty())
+    follow_thickness(pr);
+  // Re-search once the contact nodes moved far enough to bring a slave node near a segment
+  // outside its candidate list (or at the deck's fixed interval).
+  ++pr.st.cycles_since_search;
+  double moved = 0.0;
+  const std::size_t nt = pr.tracked_nodes.size();
+#pragma omp parallel for schedule(static) reduction(max : moved) if (nt > kLightLoop)
+  for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
+    const auto i = static_cast<std::size_t>(lt);
+    const double* p = at(packed, pr.tracked_nodes[i]);
+    const double dx = p[0] - pr.st.tracked_ref[3 * i], dy = p[1] - pr.st.tracked_ref[3 * i + 1],
+                 dz = p[2] - pr.st.tracked_ref[3 * i + 2];
+    moved = std::max(moved, dx * dx + dy * dy + dz * dz);
+  }
+  const int interval = pr.iface->search_interval;
+  if (!pr.st.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
+      (interval > 0 && pr.st.cycles_since_search >= interval)) {
+    search(pr, packed, mass_, rigid_, rot_, tssfac_);
+    ++pass_searches_[ip];
+  }
+  pr.seconds[0] += clock.lap();
+
+  find_surface_reads(pr, rot_.inertia != nullptr);
+  measure_surfaces(pr, dt, packed);
+  double lap = clock.lap();
+  pr.seconds[1] += lap;
+  measure_slaves(pr, dt, packed, temperature, mass_, rigid_, rot_);
+  pr.st.measured = true;
+  if (!pr.st.tie_state.empty()) {
+    // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
+    // springs held is released.
+    for (std::size_t k = 0; k < ns; ++k) {
+      if ((mine != nullptr && mine[k] == 0) || pr.st.seg[k] >= 0 ||
+          static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
+        continue;
+      pr.st.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
+      pr.hist.e_damage[k] += pr.st.stored[k];
+      pr.hist.damping[k] = 0.0;
+      pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
+      pr.hist.beta[k] = 0.0;
+      pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
+    }
+  }
+  lap = clock.lap();
+  pr.seconds[1] += lap;
+  pass_shared_[ip] += lap;
+  law::BatchInput in;
+  in.count = ns;
+  in.gap = pr.st.gap.data();
+  in.slip_x = pr.st.slip_x.data();
+  in.slip_y = pr.st.slip_y.data();
+  in.temperature = pr.st.temperature.data();
+  in.k_normal = pr.st.k_normal.data();
+  in.k_tangent = pr.st.k_tangent.data();
+  in.area = cp.slave_area.data();
+  in.mass = pr.st.m_eff.data();
+  in.dt = dt;
+  // The law is immutable and every node's update independent: chunks of the batch run in
+  // parallel (same arithmetic per node, so the same bits for any thread count).
+  constexpr std::size_t kLawChunk = 4096;
+  const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
+#pragma omp parallel for schedule(static) if (chunks > 1)
+  for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
+    const std::size_t chunk_begin = static_cast<std::size_t>(lc) * kLawChunk;
+    const std::size_t chunk_end = std::min(ns, chunk_begin + kLawChunk);
+    for (std::size_t b = chunk_begin; b < chunk_end;) {
+      // Over several ranks, the runs of this rank's slave nodes within the chunk.
+      if (mine != nullptr && mine[b] == 0) {
+        ++b;
+        continue;
+      }
+      std::size_t e = b + 1;
+      while (e < chunk_end && (mine == nullptr || mine[e] != 0))
+        ++e;
+      law::BatchInput ci = in;
+      ci.count = e - b;
+      for (const double** a : {&ci.gap, &ci.slip_x, &ci.slip_y, &ci.temperature, &ci.k_normal,
+                               &ci.k_tangent, &ci.area, &ci.mass})
+        *a += b;
+      law::BatchHistory ch = pr.hist;
+      ch.state += b;
+      for (double** a :
+           {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
+            &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
+        *a += b;
+      const law::BatchOutput co{pr.st.pressure.data() + b, pr.st.tau_x.data() + b,
+                                pr.st.tau_y.data() + b, pr.st.stored.data() + b};
+      if (pr.st.tie_state.empty()) {
+        pr.law.update_batch(ci, ch, co);
+      } else {
+        const TieArrays tie = pr.ties();
+        tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
+      }
+      b = e;
+    }
+  }
+
+  lap = clock.lap();
+  pr.seconds[2] += lap;
+  pass_shared_[ip] += lap;
+  // Forces from the tractions, and the second half of the step's work.
+#pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
+  for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
+    const auto k = static_cast<std::size_t>(lk);
+    if (mine != nullptr && mine[k] == 0)
+      continue;
+    double* f = &pr.st.force[3 * k];
+    const core::Index s = pr.st.seg[k];
+    pr.st.end_power[k] = 0.0;
+    pr.st.surface_part[k] -= 0.5 * pr.st.pressure[k] * cp.slave_area[k] * pr.st.gap_jump[k];
+    if (s < 0) {
+      f[0] = f[1] = f[2] = 0.0;
+      continue;
+    }
+    const double* fr = &pr.st.frame[9 * k];
+    const double a = cp.slave_area[k];
+    const double pn = pr.st.pressure[k] * a, t1 = pr.st.tau_x[k] * a, t2 = pr.st.tau_y[k] * a;
+    for (int c = 0; c < 3; ++c)
+      f[c] = pn * fr[c] + t1 * fr[3 + c] + t2 * fr[6 + c];
+    if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
+      continue;
+    double du[3];
+    relative_velocity(pr, k, s, &pr.st.shape[4 * k], &pr.st.rs[3 * k], pr.st.side[k], fr, packed,
+                      rot_, du);
+    pr.st.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
+    pr.st.work_part[k] += 0.5 * dt * pr.st.end_power[k];
+  }
+  lap = clock.lap();
+  pr.seconds[3] += lap;
+  pass_shared_[ip] += lap;
+  active_[ip] = 1;
+}
+
 void ContactSet::apply(double t, double dt, const double* packed, const double* temperature,
                        double* fx, double* fy, double* fz) {
   ++applies_;
@@ -42,159 +199,17 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
     for (std::size_t ip = 0; ip < np; ++ip)
       std::copy_n(passes_[ip]->seconds, 4, &seconds_before_[4 * ip]);
   }
-#pragma omp parallel for schedule(dynamic, 1) if (concurrent)
-  for (long li = 0; li < static_cast<long>(np); ++li) {
-    const std::size_t ip = pass_order_[static_cast<std::size_t>(li)];
-    PassRuntime& pr = *passes_[ip];
-    // Over several ranks this rank runs the kinematics, the law and the forces of its slave
-    // nodes (pr.mine); the rest runs whole.
-    const unsigned char* mine = pr.mine;
-    const core::ContactPass& cp = *pr.pass;
-    const std::size_t ns = cp.slave_count();
-    if (t < pr.iface->birth || t > pr.iface->death) {
-      pr.st.resultant = {0.0, 0.0, 0.0};
-      pr.st.master_resultant = {0.0, 0.0, 0.0};
-      std::fill(pr.st.prev_seg.begin(), pr.st.prev_seg.end(), -1);
-      pr.st.dt_last = 0.0;
-      // An interface that is not there does not set the step; it searches (and votes) anew
-      // once it is.
-      pr.st.dt_vote = kInf;
-      pr.st.searched = false;
-      continue;
-    }
-    core::Stopwatch clock;
-    if (cp.offsets_follow_thickness && !shell_thickness_.empty())
-      follow_thickness(pr);
-    // Re-search once the contact nodes moved far enough to bring a slave node near a segment
-    // outside its candidate list (or at the deck's fixed interval).
-    ++pr.st.cycles_since_search;
-    double moved = 0.0;
-    const std::size_t nt = pr.tracked_nodes.size();
-#pragma omp parallel for schedule(static) reduction(max : moved) if (nt > kLightLoop)
-    for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
-      const auto i = static_cast<std::size_t>(lt);
-      const double* p = at(packed, pr.tracked_nodes[i]);
-      const double dx = p[0] - pr.st.tracked_ref[3 * i], dy = p[1] - pr.st.tracked_ref[3 * i + 1],
-                   dz = p[2] - pr.st.tracked_ref[3 * i + 2];
-      moved = std::max(moved, dx * dx + dy * dy + dz * dz);
-    }
-    const int interval = pr.iface->search_interval;
-    if (!pr.st.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
-        (interval > 0 && pr.st.cycles_since_search >= interval)) {
-      search(pr, packed, mass_, rigid_, rot_, tssfac_);
-      ++pass_searches_[ip];
-    }
-    pr.seconds[0] += clock.lap();
-
-    find_surface_reads(pr, rot_.inertia != nullptr);
-    measure_surfaces(pr, dt, packed);
-    double lap = clock.lap();
-    pr.seconds[1] += lap;
-    measure_slaves(pr, dt, packed, temperature, mass_, rigid_, rot_);
-    pr.st.measured = true;
-    if (!pr.st.tie_state.empty()) {
-      // A tied node that lost its segment (the master's edge passed it) lets go: the energy its
-      // springs held is released.
-      for (std::size_t k = 0; k < ns; ++k) {
-        if ((mine != nullptr && mine[k] == 0) || pr.st.seg[k] >= 0 ||
-            static_cast<TieState>(pr.st.tie_state[k]) != TieState::tied)
-          continue;
-        pr.st.tie_state[k] = static_cast<std::int8_t>(TieState::failed);
-        pr.hist.e_damage[k] += pr.st.stored[k];
-        pr.hist.damping[k] = 0.0;
-        pr.hist.state[k] = static_cast<std::int32_t>(law::NodeState::detached);
-        pr.hist.beta[k] = 0.0;
-        pr.hist.slip_x[k] = pr.hist.slip_y[k] = 0.0;
-      }
-    }
-    lap = clock.lap();
-    pr.seconds[1] += lap;
-    pass_shared_[ip] += lap;
-    law::BatchInput in;
-    in.count = ns;
-    in.gap = pr.st.gap.data();
-    in.slip_x = pr.st.slip_x.data();
-    in.slip_y = pr.st.slip_y.data();
-    in.temperature = pr.st.temperature.data();
-    in.k_normal = pr.st.k_normal.data();
-    in.k_tangent = pr.st.k_tangent.data();
-    in.area = cp.slave_area.data();
-    in.mass = pr.st.m_eff.data();
-    in.dt = dt;
-    // The law is immutable and every node's update independent: chunks of the batch run in
-    // parallel (same arithmetic per node, so the same bits for any thread count).
-    constexpr std::size_t kLawChunk = 4096;
-    const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
-#pragma omp parallel for schedule(static) if (chunks > 1)
-    for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
-      const std::size_t chunk_begin = static_cast<std::size_t>(lc) * kLawChunk;
-      const std::size_t chunk_end = std::min(ns, chunk_begin + kLawChunk);
-      for (std::size_t b = chunk_begin; b < chunk_end;) {
-        // Over several ranks, the runs of this rank's slave nodes within the chunk.
-        if (mine != nullptr && mine[b] == 0) {
-          ++b;
-          continue;
-        }
-        std::size_t e = b + 1;
-        while (e < chunk_end && (mine == nullptr || mine[e] != 0))
-          ++e;
-        law::BatchInput ci = in;
-        ci.count = e - b;
-        for (const double** a : {&ci.gap, &ci.slip_x, &ci.slip_y, &ci.temperature, &ci.k_normal,
-                                 &ci.k_tangent, &ci.area, &ci.mass})
-          *a += b;
-        law::BatchHistory ch = pr.hist;
-        ch.state += b;
-        for (double** a :
-             {&ch.beta, &ch.gap, &ch.slip_x, &ch.slip_y, &ch.opening_x, &ch.opening_y, &ch.e_damage,
-              &ch.e_viscous, &ch.e_friction, &ch.e_damping, &ch.e_healing, &ch.damping})
-          *a += b;
-        const law::BatchOutput co{pr.st.pressure.data() + b, pr.st.tau_x.data() + b,
-                                  pr.st.tau_y.data() + b, pr.st.stored.data() + b};
-        if (pr.st.tie_state.empty()) {
-          pr.law.update_batch(ci, ch, co);
-        } else {
-          const TieArrays tie = pr.ties();
-          tiebreak_update(pr.iface->tiebreak, pr.law, ci, ch, {tie.state + b, tie.gap0 + b}, co);
-        }
-        b = e;
-      }
-    }
-
-    lap = clock.lap();
-    pr.seconds[2] += lap;
-    pass_shared_[ip] += lap;
-    // Forces from the tractions, and the second half of the step's work.
-#pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
-    for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
-      const auto k = static_cast<std::size_t>(lk);
-      if (mine != nullptr && mine[k] == 0)
-        continue;
-      double* f = &pr.st.force[3 * k];
-      const core::Index s = pr.st.seg[k];
-      pr.st.end_power[k] = 0.0;
-      pr.st.surface_part[k] -= 0.5 * pr.st.pressure[k] * cp.slave_area[k] * pr.st.gap_jump[k];
-      if (s < 0) {
-        f[0] = f[1] = f[2] = 0.0;
-        continue;
-      }
-      const double* fr = &pr.st.frame[9 * k];
-      const double a = cp.slave_area[k];
-      const double pn = pr.st.pressure[k] * a, t1 = pr.st.tau_x[k] * a, t2 = pr.st.tau_y[k] * a;
-      for (int c = 0; c < 3; ++c)
-        f[c] = pn * fr[c] + t1 * fr[3 + c] + t2 * fr[6 + c];
-      if (f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0)
-        continue;
-      double du[3];
-      relative_velocity(pr, k, s, &pr.st.shape[4 * k], &pr.st.rs[3 * k], pr.st.side[k], fr, packed,
-                        rot_, du);
-      pr.st.end_power[k] = -(f[0] * du[0] + f[1] * du[1] + f[2] * du[2]);
-      pr.st.work_part[k] += 0.5 * dt * pr.st.end_power[k];
-    }
-    lap = clock.lap();
-    pr.seconds[3] += lap;
-    pass_shared_[ip] += lap;
-    active_[ip] = 1;
+  // Not a parallel region of one thread when they run one after the other: the passes' own
+  // loops would then be nested regions, whose threads libgomp keeps apart from the element
+  // loop's, and more threads than cores spin at its barriers (the punched plate ran 5 times
+  // slower).
+  if (concurrent) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long li = 0; li < static_cast<long>(np); ++li)
+      apply_pass(pass_order_[static_cast<std::size_t>(li)], t, dt, packed, temperature);
+  } else {
+    for (std::size_t ip = 0; ip < np; ++ip)
+      apply_pass(ip, t, dt, packed, temperature);
   }
   if (concurrent) {
     const double wall = together.lap();

@@ -204,6 +204,8 @@ class ContactSet {
   // apply(): whether, and in which order, the passes run side by side (passes_in_parallel());
   // per pass, its seconds so far, and this cycle's shared seconds and searches.
   bool passes_in_parallel();
+  void apply_pass(std::size_t ip, double t, double dt, const double* packed,
+                  const double* temperature);
   std::vector<std::size_t> pass_order_;
   std::vector<double> pass_cost_, pass_shared_, seconds_before_;
   std::vector<long> pass_searches_;
