@@ -148,8 +148,8 @@ void ContactSet::apply_pass(std::size_t ip, double t, double dt, const double* p
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
-    if (mine != nullptr && mine[k] == 0)
-      continue;
+    if ((mine != nullptr && mine[k] == 0) || pr.passed_over[k] != 0)
+      continue;  // another rank's, or far (its force and books are zero already)
     double* f = &pr.st.force[3 * k];
     const core::Index s = pr.st.seg[k];
     pr.st.end_power[k] = 0.0;

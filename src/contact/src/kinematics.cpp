@@ -108,12 +108,24 @@ void measure_slaves(PassRuntime& pr, double dt, const double* packed, const doub
   const core::ContactPass& cp = *pr.pass;
   const std::size_t ns = cp.slave_count();
   const law::BatchHistory& h = pr.hist;
+  pr.far_cycles.resize(ns, 0);
+  pr.passed_over.resize(ns, 0);
 #pragma omp parallel for schedule(static) if (ns > kHeavyLoop)
   for (long lk = 0; lk < static_cast<long>(ns); ++lk) {
     const auto k = static_cast<std::size_t>(lk);
     if (pr.mine != nullptr && pr.mine[k] == 0)
       continue;  // another rank's slave node (slave_share.hpp)
     const core::Index node = cp.slave_nodes[k];
+    // Far (pass_runtime.hpp): two cycles measured it so already; only its temperature moves.
+    const bool far = pr.st.seg[k] < 0 && pr.st.prev_seg[k] < 0 &&
+                     pr.st.cand_start[k] == pr.st.cand_start[k + 1];
+    pr.passed_over[k] = far && pr.far_cycles[k] >= 2 ? 1 : 0;
+    if (pr.passed_over[k] != 0) {
+      pr.st.temperature[k] =
+          temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;
+      continue;
+    }
+    pr.far_cycles[k] = far ? static_cast<std::uint8_t>(std::min(pr.far_cycles[k] + 1, 2)) : 0;
     // First half of the trapezoidal work of the step just taken, with last cycle's force (and
     // last cycle's frame and surface point, still in the arrays). Where the step changed, that
     // force moved the nodes over dt_avg / 2 on each side of its time: (dt - dt_last) / 4 times

@@ -176,6 +176,14 @@ struct PassRuntime {
   std::vector<double> fold_centroid, fold_normal;  // update_folds' scratch, 3 per segment
   bool folds_fixed = false;
   std::vector<double> chunk_sums;  // buffer of chunked_sum
+  /// Per slave node, the cycles in a row the kinematics found it far: no segment last cycle or
+  /// the one before, no candidate (at most 2); and whether they passed over it this cycle. Two
+  /// such cycles wrote everything a third would (the stand-in gap, zero slip, force and books,
+  /// in both halves of the double-buffered arrays), so the kinematics and the forces pass over
+  /// it until it has a candidate again (measure_slaves): far from a small tool, most of a
+  /// blank's nodes. Not in the checkpoint: a restarted run measures such a node twice again and
+  /// writes the same values.
+  std::vector<std::uint8_t> far_cycles, passed_over;
   /// The parts of the surfaces this cycle's kinematics read (surface_reads.hpp), so that only
   /// those normals, folds and centroids are computed; `all_master`, `all_slaves`: every one of
   /// that side is.
