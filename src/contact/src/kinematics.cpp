@@ -117,8 +117,8 @@ void measure_slaves(PassRuntime& pr, double dt, const double* packed, const doub
       continue;  // another rank's slave node (slave_share.hpp)
     const core::Index node = cp.slave_nodes[k];
     // Far (pass_runtime.hpp): two cycles measured it so already; only its temperature moves.
-    const bool far = pr.st.seg[k] < 0 && pr.st.prev_seg[k] < 0 &&
-                     pr.st.cand_start[k] == pr.st.cand_start[k + 1];
+    const bool far =
+        pr.st.seg[k] < 0 && pr.st.prev_seg[k] < 0 && pr.st.cand_start[k] == pr.st.cand_start[k + 1];
     pr.passed_over[k] = far && pr.far_cycles[k] >= 2 ? 1 : 0;
     if (pr.passed_over[k] != 0) {
       pr.st.temperature[k] =

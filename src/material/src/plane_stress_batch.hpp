@@ -19,12 +19,24 @@
 
 namespace plyform::material::detail {
 
-// The lockstep solve of up to kSize points' scalar equations; the derived batches add points
-// and write the results back.
+// The lockstep solve of up to kSize points' scalar equations; the derived batch (Batch) adds
+// points with push() and writes their results back in its write_back(). A template, so that each
+// batch's solve is its own code, compiled with its law file's floating-point contraction (a
+// shared out-of-line copy would round as one of the files only).
+template <class Batch>
 class LinearPlaneStressLanes {
  public:
   static constexpr std::size_t kSize = 32;
   static constexpr int kSweeps = 4;
+
+  /// Solves the points gathered so far and writes their results back.
+  void flush() {
+    if (n_ == 0)
+      return;
+    solve();
+    static_cast<Batch*>(this)->write_back();
+    n_ = 0;
+  }
 
  protected:
   // Point i's equation: a, b the return's moduli, the yield curve sy0 + hp eps_p, the plastic
@@ -42,6 +54,12 @@ class LinearPlaneStressLanes {
     t_tr_[i] = t;
     psi_tr_[i] = psi_tr;
     return i;
+  }
+
+  /// After a point is pushed: solves the batch once it is full.
+  void flush_if_full() {
+    if (n_ == kSize)
+      flush();
   }
 
   /// gamma of every point pushed (g_).
@@ -124,7 +142,7 @@ class LinearPlaneStressLanes {
   double big_a_[kSize], big_b_[kSize], lo_[kSize], hi_[kSize], g_[kSize], done_[kSize];
 };
 
-class LinearPlaneStressBatch : private LinearPlaneStressLanes {
+class LinearPlaneStressBatch : public LinearPlaneStressLanes<LinearPlaneStressBatch> {
  public:
   /// The point's arrays the results go back to (indexed by the point numbers given to add).
   LinearPlaneStressBatch(double* sxx, double* syy, double* sxy, double* eps_p, double* dzz)
@@ -142,21 +160,12 @@ class LinearPlaneStressBatch : private LinearPlaneStressLanes {
                                eps_p_[point], p_tr, q_tr, t, psi_tr);
     index_[i] = point;
     nu_e_[i] = nu / young;
-    if (n_ == kSize)
-      flush();
-  }
-
-  /// Solves the points gathered so far and writes their stresses, plastic strain and thickness
-  /// strain back.
-  void flush() {
-    if (n_ == 0)
-      return;
-    solve();
-    write_back();
-    n_ = 0;
+    flush_if_full();
   }
 
  private:
+  friend class LinearPlaneStressLanes<LinearPlaneStressBatch>;
+
   // The backward-Euler stress at gamma (shell.cpp's plane_stress_return_kernel says why),
   // computed across the batch, then scattered to the points.
   void write_back() {
@@ -194,7 +203,7 @@ class LinearPlaneStressBatch : private LinearPlaneStressLanes {
 // stress eta = sigma - alpha with a + H, b + H): the points' gammas solved together, the stress,
 // back stress (xx, yy, xy in the history's slots 0, 1, 3), plastic strain and thickness strain
 // written back per point by the scalar return's own formulas.
-class KinematicPlaneStressBatch : private LinearPlaneStressLanes {
+class KinematicPlaneStressBatch : public LinearPlaneStressLanes<KinematicPlaneStressBatch> {
  public:
   /// a, b: the elastic return moduli E / (2 (1 - nu)), 3 G; h_kin: (1 - BETA) E_p; history: the
   /// points' six back-stress slots each.
@@ -220,14 +229,14 @@ class KinematicPlaneStressBatch : private LinearPlaneStressLanes {
     const std::size_t i =
         push(a_el_ + h_kin_, b_el_ + h_kin_, sy0, hp, eps_p_[point], p_tr, q_tr, t, psi_tr);
     index_[i] = point;
-    if (n_ == kSize)
-      flush();
+    flush_if_full();
   }
 
-  void flush() {
-    if (n_ == 0)
-      return;
-    solve();
+ private:
+  friend class LinearPlaneStressLanes<KinematicPlaneStressBatch>;
+
+  // The stress, back stress, plastic strain and thickness strain at gamma, per point.
+  void write_back() {
     const double a = a_el_, b = b_el_, h = h_kin_;
     for (std::size_t i = 0; i < n_; ++i) {
       const std::size_t p = index_[i];
@@ -245,10 +254,8 @@ class KinematicPlaneStressBatch : private LinearPlaneStressLanes {
       eps_p_[p] += g * std::sqrt(big_a_[i] * ua * ua + big_b_[i] * ub * ub);
       dzz_[p] += -nu_e_ * dp - 0.5 * g * pe;
     }
-    n_ = 0;
   }
 
- private:
   double a_el_, b_el_, nu_e_, h_kin_;
   double* sxx_;
   double* syy_;
