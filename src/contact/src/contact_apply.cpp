@@ -104,19 +104,31 @@ void ContactSet::apply_pass(std::size_t ip, double t, double dt, const double* p
   // The law is immutable and every node's update independent: chunks of the batch run in
   // parallel (same arithmetic per node, so the same bits for any thread count).
   constexpr std::size_t kLawChunk = 4096;
+  const bool ties = !pr.st.tie_state.empty();
+  const auto updates = [&](std::size_t k) {
+    if (mine != nullptr && mine[k] == 0)
+      return false;
+    if (ties || pr.passed_over[k] == 0)
+      return true;
+    const auto state = static_cast<law::NodeState>(pr.hist.state[k]);
+    return state != law::NodeState::approaching && state != law::NodeState::detached;
+  };
   const std::size_t chunks = (ns + kLawChunk - 1) / kLawChunk;
 #pragma omp parallel for schedule(static) if (chunks > 1)
   for (long lc = 0; lc < static_cast<long>(chunks); ++lc) {
     const std::size_t chunk_begin = static_cast<std::size_t>(lc) * kLawChunk;
     const std::size_t chunk_end = std::min(ns, chunk_begin + kLawChunk);
     for (std::size_t b = chunk_begin; b < chunk_end;) {
-      // Over several ranks, the runs of this rank's slave nodes within the chunk.
-      if (mine != nullptr && mine[b] == 0) {
+      // The runs of the nodes the law updates within the chunk: over several ranks this rank's;
+      // not a far node passed over by the kinematics (pass_runtime.hpp) whose law is free
+      // (approaching or detached): two cycles at the same stand-in gap, with no damping
+      // traction, left its history as the law would and its tractions zero.
+      if (!updates(b)) {
         ++b;
         continue;
       }
       std::size_t e = b + 1;
-      while (e < chunk_end && (mine == nullptr || mine[e] != 0))
+      while (e < chunk_end && updates(e))
         ++e;
       law::BatchInput ci = in;
       ci.count = e - b;
