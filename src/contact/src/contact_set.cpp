@@ -304,6 +304,9 @@ void ContactSet::share_slaves(const comm::Communicator& comm, std::span<const in
     }
     shares_.push_back(std::make_unique<SlaveShare>(comm, owner));
     pp->mine = shares_.back()->mine().data();
+    // A node this rank takes over is measured twice again before it is passed over as far
+    // (pass_runtime.hpp): its count here is from when it was last this rank's.
+    pp->far_cycles.assign(cp.slave_count(), 0);
   }
   gathered_at_ = applies_;
 }
