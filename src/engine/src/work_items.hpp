@@ -85,11 +85,11 @@ inline std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) 
   add_block_colours(model, model.shell_blocks, true, colours);
   // Groups of blocks that share no node. Each node carries the groups whose blocks use it, one
   // bit each, for the first 64 groups; a block that touches all of those (a model of more than
-  // 64 parts that all share nodes) makes a group of its own that no later block joins.
+  // 64 parts that all share nodes) makes a group of its own (from the 65th on) that no later
+  // block joins.
   constexpr std::size_t kMarked = 64;
   std::vector<std::uint64_t> node_groups(model.node_count(), 0);
   std::vector<std::vector<std::size_t>> groups;  // indices into colours
-  std::vector<bool> open;                        // a later block may join the group
   for (std::size_t i = 0; i < colours.size(); ++i) {
     if (colours[i].empty())
       continue;
@@ -101,12 +101,10 @@ inline std::vector<std::vector<WorkItem>> make_phases(const core::Model& model) 
     for (const core::Index n : connectivity)
       touched |= node_groups[static_cast<std::size_t>(n)];
     std::size_t g = 0;
-    while (g < groups.size() && (!open[g] || (touched >> g & 1u) != 0))
+    while (g < groups.size() && (g >= kMarked || (touched >> g & 1u) != 0))
       ++g;
-    if (g == groups.size()) {
+    if (g == groups.size())
       groups.emplace_back();
-      open.push_back(g < kMarked);
-    }
     groups[g].push_back(i);
     if (g < kMarked)
       for (const core::Index n : connectivity)

@@ -179,13 +179,20 @@ INSTANTIATE_TEST_SUITE_P(Beta, KinematicLoop, ::testing::Values(0.0, 0.4, 1.0), 
   return "beta_" + std::to_string(static_cast<int>(10 * p.param));
 });
 
+// A point pulled in uniaxial stress by `steps` axial increments of 1e-4 (past yield).
+template <class Step>
+Point pulled(int steps, Step&& step) {
+  Point p;
+  for (int i = 0; i < steps; ++i)
+    uniaxial_step(p, 1e-4, step);
+  return p;
+}
+
 // The back stress of the shell stays on the yield surface's centre: after tension, the
 // point is on the surface |sigma - a| = k with a = (1 - BETA) E_p eps_p in the axial slot.
 TEST(PlasticKinematic, ShellBackStressIsTheKinematicHardening) {
   const core::PlasticKinematic m = kinematic(0.25);
-  Point p;
-  for (int i = 0; i < 200; ++i)
-    uniaxial_step(p, 1e-4, [&](Point& q, double dx, double dl) { shell_step(m, q, dx, dl); });
+  Point p = pulled(200, [&](Point& q, double dx, double dl) { shell_step(m, q, dx, dl); });
   const double ep = kE * kEtan / (kE - kEtan);
   EXPECT_NEAR(p.back[0], 0.75 * ep * p.eps_p, 1e-9 * kSigy);
   EXPECT_NEAR(p.back[1], 0.0, 1e-9 * kSigy);
@@ -196,9 +203,7 @@ TEST(PlasticKinematic, ShellBackStressIsTheKinematicHardening) {
 // invariant, so the point stays on the yield surface and no plastic strain grows.
 TEST(PlasticKinematic, SolidBackStressTurnsWithTheStress) {
   const core::PlasticKinematic m = kinematic(0.0);
-  Point p;
-  for (int i = 0; i < 100; ++i)
-    uniaxial_step(p, 1e-4, [&](Point& q, double dx, double dl) { solid_step(m, q, dx, dl); });
+  Point p = pulled(100, [&](Point& q, double dx, double dl) { solid_step(m, q, dx, dl); });
   const double e0 = p.eps_p;
   const std::array<double, 6> d{};
   const std::array<double, 3> w{0.7, 0.0, 0.0};  // W_12: about z
@@ -220,9 +225,7 @@ TEST(PlasticKinematic, SolidBackStressTurnsWithTheStress) {
 // surface and no plastic strain grows.
 TEST(PlasticKinematic, ShellBackStressTurnsWithTheStress) {
   const core::PlasticKinematic m = kinematic(0.0);
-  Point p;
-  for (int i = 0; i < 100; ++i)
-    uniaxial_step(p, 1e-4, [&](Point& q, double dx, double dl) { shell_step(m, q, dx, dl); });
+  Point p = pulled(100, [&](Point& q, double dx, double dl) { shell_step(m, q, dx, dl); });
   const double e0 = p.eps_p;
   const double phi = 0.05, angle = 2.0 * std::atan(0.5 * phi);
   const double c = std::cos(angle), sn = std::sin(angle);
