@@ -18,17 +18,27 @@ namespace plyform::app {
 namespace {
 
 /// A real number right-aligned in `width` characters, in E notation with as many digits as the
-/// field holds: a sign, "d.", the decimals and "E+dd" (width 20: 14 significant digits, 16:
-/// 10). Magnitudes below 1e-99 are written as 0 (a three-digit exponent would not fit); none
-/// of the written quantities reaches 1e100, which is refused rather than written wider.
-std::string real_field(double v, int width) {
+/// field holds: a sign, "d.", the decimals and "E+dd" (width 16: 10 significant digits). With
+/// `blank`, one digit fewer, so that a blank always leads the field (a reader that splits the
+/// card at blanks still finds the fields). Magnitudes below 1e-99 are written as 0 (a
+/// three-digit exponent would not fit); none of the written quantities reaches 1e100, which is
+/// refused rather than written wider.
+std::string real_field(double v, int width, bool blank = false) {
   if (!std::isfinite(v))
     throw std::runtime_error(fmt::format("dynain: a non-finite value ({}) cannot be written", v));
   if (std::abs(v) < 1e-99)
     v = 0.0;
   if (std::abs(v) >= 1e100)
     throw std::runtime_error(fmt::format("dynain: {:.6e} does not fit a field", v));
-  return fmt::format("{:>{}.{}E}", v, width, width - 7);
+  return fmt::format("{:>{}.{}E}", v, width, width - (blank ? 8 : 7));
+}
+
+/// The fields of LARGE 1 (*INITIAL_STRESS_SHELL, *INITIAL_STRAIN_SHELL): LS-DYNA's large
+/// format, five fields of 16 characters to a card of 80 columns, as OpenRadioss's reader of
+/// LS-DYNA decks and LS-PrePost's dynain take it (pydyna writes 20; plyform reads both:
+/// keyword/common_cards.hpp); 9 significant digits behind a blank.
+std::string large_field(double v) {
+  return real_field(v, 16, true);
 }
 
 /// One shell to write: its deck id (the file lists them in id order), block and index.
@@ -98,9 +108,8 @@ void write_stresses(std::ostream& f, const core::Model& m, const engine::Snapsho
                     const std::vector<ShellRef>& shells) {
   f << "*INITIAL_STRESS_SHELL\n"
        "$#     eid    nplane    nthick     nhisv    ntensr     large    nthint    nthhsv\n"
-       "$#                 t               sigxx               sigyy               sigzz"
-       "               sigxy\n"
-       "$#             sigyz               sigzx                 eps\n";
+       "$#             t           sigxx           sigyy           sigzz           sigxy\n"
+       "$#         sigyz           sigzx             eps\n";
   std::vector<double> zeta, weight;
   for (const ShellRef& r : shells) {
     const core::ShellBlock& blk = m.shell_blocks[r.block];
@@ -125,10 +134,9 @@ void write_stresses(std::ostream& f, const core::Model& m, const engine::Snapsho
                                 {st.s[4][q], st.s[3][q], 0.0}};
         double sig[6];
         shell_stress_to_global(axes, l, sig);
-        f << real_field(zeta[k], 20) << real_field(sig[0], 20) << real_field(sig[1], 20)
-          << real_field(sig[2], 20) << real_field(sig[3], 20) << '\n'
-          << real_field(sig[4], 20) << real_field(sig[5], 20) << real_field(st.eps_p[q], 20)
-          << '\n';
+        f << large_field(zeta[k]) << large_field(sig[0]) << large_field(sig[1])
+          << large_field(sig[2]) << large_field(sig[3]) << '\n'
+          << large_field(sig[4]) << large_field(sig[5]) << large_field(st.eps_p[q]) << '\n';
       }
     }
   }
@@ -138,9 +146,8 @@ void write_strains(std::ostream& f, const std::vector<element::ShellBlockState>&
                    const std::vector<ShellRef>& shells, const ShellFormability& formability) {
   f << "*INITIAL_STRAIN_SHELL\n"
        "$#     eid    nplane    nthick     large                              ilocal\n"
-       "$#             epsxx               epsyy               epszz               epsxy"
-       "               epsyz\n"
-       "$#             epszx                   t\n";
+       "$#         epsxx           epsyy           epszz           epsxy           epsyz\n"
+       "$#         epszx               t\n";
   for (const ShellRef& r : shells) {
     double bottom[6], top[6];
     if (!formability.surface_strain_tensors(r.shell, states[r.block].thickness[r.element], bottom,
@@ -151,9 +158,9 @@ void write_strains(std::ostream& f, const std::vector<element::ShellBlockState>&
     const double* surface[2] = {bottom, top};
     for (int k = 0; k < 2; ++k) {
       const double* e = surface[k];
-      f << real_field(e[0], 20) << real_field(e[1], 20) << real_field(e[2], 20)
-        << real_field(e[3], 20) << real_field(e[4], 20) << '\n'
-        << real_field(e[5], 20) << real_field(k == 0 ? -1.0 : 1.0, 20) << '\n';
+      f << large_field(e[0]) << large_field(e[1]) << large_field(e[2]) << large_field(e[3])
+        << large_field(e[4]) << '\n'
+        << large_field(e[5]) << large_field(k == 0 ? -1.0 : 1.0) << '\n';
     }
   }
 }

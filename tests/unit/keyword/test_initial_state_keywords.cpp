@@ -1,6 +1,7 @@
 // *INITIAL_STRESS_SHELL, *INITIAL_STRAIN_SHELL and *INTERFACE_SPRINGBACK_LSDYNA: the cards of
-// LS-DYNA's dynain in both field widths (LARGE 0 and 1), the history cards read over with a
-// warning, and what plyform does not do refused or warned about by name with its line.
+// LS-DYNA's dynain in its field widths (LARGE 0 and 1, and pydyna's 20-character variant of
+// LARGE 1), the history cards read over with a warning, and what plyform does not do refused
+// or warned about by name with its line.
 #include <gtest/gtest.h>
 
 #include "deck_text_checks.hpp"
@@ -11,7 +12,10 @@ namespace {
 
 using namespace test;  // read_ok, expect_error
 
-TEST(InitialStressShell, ReadsTenAndTwentyCharacterCards) {
+// LARGE 1: LS-DYNA's large format, five fields of 16 characters to a card of 80 columns (as
+// OpenRadioss's reader of LS-DYNA decks takes it); a card that runs past column 80 is in fields
+// of 20 (pydyna's), and the point's second card and history cards follow its first card's width.
+TEST(InitialStressShell, ReadsTenSixteenAndTwentyCharacterCards) {
   const ReadResult r = read_ok(
       "*INITIAL_STRESS_SHELL\n"
       "$#     eid    nplane    nthick     nhisv    ntensr     large    nthint    nthhsv\n"
@@ -21,8 +25,14 @@ TEST(InitialStressShell, ReadsTenAndTwentyCharacterCards) {
       "         8         1         1         0         0         1\n"
       "  0.000000000000E+00  1.234567890123E+02 -2.000000000000E+00  0.000000000000E+00"
       "  3.000000000000E+00\n"
-      "  4.000000000000E+00  5.000000000000E+00  1.000000000000E-01\n");
-  ASSERT_EQ(r.model.initial_shell_stresses.size(), 2u);
+      "  4.000000000000E+00  5.000000000000E+00  1.000000000000E-01\n"
+      "         9         1         1         6         0         1\n"
+      "$#             t           sigxx           sigyy           sigzz           sigxy\n"
+      " -7.74596669E-01-1.234567890E+02 -2.00000000E+00  0.00000000E+00  3.00000000E+00\n"
+      "  4.00000000E+00 -5.00000000E+00  1.00000000E-01\n"
+      "              1.              2.              3.              4.              5.\n"
+      "              6.\n");
+  ASSERT_EQ(r.model.initial_shell_stresses.size(), 3u);
   const model::InitialStressShellDesc& a = r.model.initial_shell_stresses[0];
   EXPECT_EQ(a.element_id, 7);
   EXPECT_EQ(a.nplane, 1);
@@ -45,6 +55,17 @@ TEST(InitialStressShell, ReadsTenAndTwentyCharacterCards) {
   EXPECT_EQ(b.points[0].sigma[4], 4.0);
   EXPECT_EQ(b.points[0].sigma[5], 5.0);
   EXPECT_EQ(b.points[0].eps, 0.1);
+  // 16 characters: the second field's value has no blank before it (the columns decide).
+  const model::InitialStressShellDesc& c = r.model.initial_shell_stresses[2];
+  EXPECT_TRUE(c.large);
+  ASSERT_EQ(c.points.size(), 1u);
+  EXPECT_EQ(c.points[0].t, -0.774596669);
+  EXPECT_EQ(c.points[0].sigma[0], -123.456789);
+  EXPECT_EQ(c.points[0].sigma[1], -2.0);
+  EXPECT_EQ(c.points[0].sigma[3], 3.0);
+  EXPECT_EQ(c.points[0].sigma[4], 4.0);
+  EXPECT_EQ(c.points[0].sigma[5], -5.0);
+  EXPECT_EQ(c.points[0].eps, 0.1);
 }
 
 TEST(InitialStressShell, HistoryValuesAreReadOverWithAWarning) {
@@ -91,13 +112,24 @@ TEST(InitialStrainShell, ReadsBothSurfacesInBothWidths) {
       "  6.000000000000E-02 -1.000000000000E+00\n"
       "  1.000000000000E-02  2.000000000000E-02  3.000000000000E-02  4.000000000000E-02"
       "  5.000000000000E-02\n"
-      "  6.000000000000E-02  1.000000000000E+00\n");
-  ASSERT_EQ(r.model.initial_shell_strains.size(), 2u);
+      "  6.000000000000E-02  1.000000000000E+00\n"
+      "         5         1         2         1                                       0\n"
+      "  1.00000000E-02-2.000000000E-02  3.00000000E-02  4.00000000E-02  5.00000000E-02\n"
+      " -6.00000000E-02 -1.00000000E+00\n"
+      "  1.00000000E-02  2.00000000E-02  3.00000000E-02  4.00000000E-02  5.00000000E-02\n"
+      "  6.00000000E-02  1.00000000E+00\n");
+  ASSERT_EQ(r.model.initial_shell_strains.size(), 3u);
   EXPECT_EQ(r.model.initial_shell_strains[0].points[1].eps[0], 0.03);
   EXPECT_EQ(r.model.initial_shell_strains[0].points[0].eps[3], 0.005);
   EXPECT_EQ(r.model.initial_shell_strains[0].points[1].t, 1.0);
   EXPECT_EQ(r.model.initial_shell_strains[1].points[0].eps[5], 0.06);
   EXPECT_EQ(r.model.initial_shell_strains[1].points[0].t, -1.0);
+  // LS-DYNA's 16-character fields (the columns decide, blank or not).
+  EXPECT_EQ(r.model.initial_shell_strains[2].points[0].eps[1], -0.02);
+  EXPECT_EQ(r.model.initial_shell_strains[2].points[0].eps[5], -0.06);
+  EXPECT_EQ(r.model.initial_shell_strains[2].points[0].t, -1.0);
+  EXPECT_EQ(r.model.initial_shell_strains[2].points[1].eps[4], 0.05);
+  EXPECT_EQ(r.model.initial_shell_strains[2].points[1].t, 1.0);
   expect_error("*INITIAL_STRAIN_SHELL\n1,1,2,0,,,,1\n", 2, "*INITIAL_STRAIN_SHELL", "ILOCAL",
                "must be one of");
 }

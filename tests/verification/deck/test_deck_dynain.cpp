@@ -9,9 +9,10 @@
 // - *INITIAL_STRESS_SHELL applied at t = 0 against the closed form: the card's points
 //   interpolated in T to the section's points and turned into the element's frame, NPLANE 1
 //   and 4 on ELFORM 2 and 16.
-// - card layout: the written text parsed by the column positions of LS-DYNA's manual (*NODE,
-//   *ELEMENT_SHELL_THICKNESS, *INITIAL_STRESS_SHELL and *INITIAL_STRAIN_SHELL with LARGE 1),
-//   the point coordinates T against the Gauss rule's closed form.
+// - card layout: the written text parsed by LS-DYNA's column positions (*NODE,
+//   *ELEMENT_SHELL_THICKNESS, *INITIAL_STRESS_SHELL and *INITIAL_STRAIN_SHELL with LARGE 1 in
+//   16-character fields, as OpenRadioss's reader of LS-DYNA decks takes them), the point
+//   coordinates T against the Gauss rule's closed form.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -198,11 +199,12 @@ TEST_P(DynainRoundTrip, HoldsTheEndStateAndStartsTheNextRunFromIt) {
       for (std::size_t g = 0; g < inplane; ++g) {
         const model::InitialStressPoint& p = s.stress.points[k * inplane + g];
         const std::size_t q = e * st.points_per_element() + g * nip + k;
-        EXPECT_NEAR(p.t, zeta[k], 1e-13);
+        // LARGE 1 prints 9 significant digits (docs/outputs.md).
+        EXPECT_NEAR(p.t, zeta[k], 1e-8);
         const std::array<double, 6> sg = to_global(frame, st, q);
         for (std::size_t cc = 0; cc < 6; ++cc)
-          EXPECT_NEAR(p.sigma[cc], sg[cc], 1e-12 * sigma_max) << "element " << e << " point " << q;
-        EXPECT_NEAR(p.eps, st.eps_p[q], 1e-13 * eps_max);
+          EXPECT_NEAR(p.sigma[cc], sg[cc], 1e-8 * sigma_max) << "element " << e << " point " << q;
+        EXPECT_NEAR(p.eps, st.eps_p[q], 1e-8 * eps_max);
       }
     }
     // The surfaces' strains: the thickness stretch along the centre's normal (t1 x t2 of the
@@ -271,8 +273,8 @@ TEST_P(DynainRoundTrip, HoldsTheEndStateAndStartsTheNextRunFromIt) {
       "ELFORM %d NIP %d: max |stress| %.4g, max eps_p %.4g; restarted from dynain: "
       "stress off by %.3g of the max, eps_p by %.3g, thickness by %.3g of h0\n",
       c.elform, c.nip, sigma_max, eps_max, worst_stress / sigma_max, worst_eps, worst_h);
-  EXPECT_LT(worst_stress, 1e-8 * sigma_max);
-  EXPECT_LT(worst_eps, 1e-12);
+  EXPECT_LT(worst_stress, 2e-8 * sigma_max);
+  EXPECT_LT(worst_eps, 1e-8 * eps_max);
   EXPECT_LT(worst_h, 1e-9);
 }
 
@@ -472,31 +474,31 @@ const Card kThickness{{"THIC1", 1, 16, false},
                       {"THIC3", 33, 16, false},
                       {"THIC4", 49, 16, false}};
 // *INITIAL_STRESS_SHELL: EID NPLANE NTHICK NHISV NTENSR LARGE NTHINT NTHHSV (I10); with
-// LARGE 1 each point on two cards of 20-character fields: T SIGXX SIGYY SIGZZ SIGXY, then
+// LARGE 1 each point on two cards of 16-character fields: T SIGXX SIGYY SIGZZ SIGXY, then
 // SIGYZ SIGZX EPS.
 const Card kStressHeader{{"EID", 1, 10, true},     {"NPLANE", 11, 10, true},
                          {"NTHICK", 21, 10, true}, {"NHISV", 31, 10, true},
                          {"NTENSR", 41, 10, true}, {"LARGE", 51, 10, true},
                          {"NTHINT", 61, 10, true}, {"NTHHSV", 71, 10, true}};
-const Card kStressLarge1{{"T", 1, 20, false},
-                         {"SIGXX", 21, 20, false},
-                         {"SIGYY", 41, 20, false},
-                         {"SIGZZ", 61, 20, false},
-                         {"SIGXY", 81, 20, false}};
-const Card kStressLarge2{{"SIGYZ", 1, 20, false}, {"SIGZX", 21, 20, false}, {"EPS", 41, 20, false}};
+const Card kStressLarge1{{"T", 1, 16, false},
+                         {"SIGXX", 17, 16, false},
+                         {"SIGYY", 33, 16, false},
+                         {"SIGZZ", 49, 16, false},
+                         {"SIGXY", 65, 16, false}};
+const Card kStressLarge2{{"SIGYZ", 1, 16, false}, {"SIGZX", 17, 16, false}, {"EPS", 33, 16, false}};
 // *INITIAL_STRAIN_SHELL: EID NPLANE NTHICK LARGE (I10), columns 41-70 unused, ILOCAL 71-80;
-// with LARGE 1: EPSXX EPSYY EPSZZ EPSXY EPSYZ, then EPSZX T (20 characters).
+// with LARGE 1: EPSXX EPSYY EPSZZ EPSXY EPSYZ, then EPSZX T (16 characters).
 const Card kStrainHeader{{"EID", 1, 10, true},
                          {"NPLANE", 11, 10, true},
                          {"NTHICK", 21, 10, true},
                          {"LARGE", 31, 10, true},
                          {"ILOCAL", 71, 10, true}};
-const Card kStrainLarge1{{"EPSXX", 1, 20, false},
-                         {"EPSYY", 21, 20, false},
-                         {"EPSZZ", 41, 20, false},
-                         {"EPSXY", 61, 20, false},
-                         {"EPSYZ", 81, 20, false}};
-const Card kStrainLarge2{{"EPSZX", 1, 20, false}, {"T", 21, 20, false}};
+const Card kStrainLarge1{{"EPSXX", 1, 16, false},
+                         {"EPSYY", 17, 16, false},
+                         {"EPSZZ", 33, 16, false},
+                         {"EPSXY", 49, 16, false},
+                         {"EPSYZ", 65, 16, false}};
+const Card kStrainLarge2{{"EPSZX", 1, 16, false}, {"T", 17, 16, false}};
 
 /// The card's values from a line by column: each field right-aligned in its columns with no
 /// blank inside it (a number that overflowed its field would break that), a whole integer or a
@@ -586,8 +588,11 @@ TEST(DynainLayout, CardsSitInTheManualsColumns) {
       for (int g = 0; g < 4; ++g, i += 2) {
         const auto a = parse(stress[i].second, kStressLarge1, stress[i].first);
         const auto b = parse(stress[i + 1].second, kStressLarge2, stress[i + 1].first);
-        EXPECT_NEAR(a[0], gauss[k], 1e-13);
-        EXPECT_GE(b[2], 0.0);  // EPS
+        EXPECT_NEAR(a[0], gauss[k], 1e-8);  // 9 significant digits
+        EXPECT_GE(b[2], 0.0);               // EPS
+        // A blank leads every field, so that a reader splitting at blanks finds them too.
+        for (std::size_t c = 0; c < 5; ++c)
+          EXPECT_EQ(stress[i].second[16 * c], ' ') << "line " << stress[i].first;
       }
     }
   }

@@ -20,6 +20,19 @@ inline constexpr std::array<std::string_view, 2> kNoneOrTitle{"", "TITLE"};
 inline constexpr std::array<std::string_view, 2> kNoneOrId{"", "ID"};
 inline constexpr std::array<std::string_view, 1> kNoOptions{""};
 
+/// The field width of a LARGE = 1 card of a dynain (*INITIAL_STRESS_SHELL,
+/// *INITIAL_STRAIN_SHELL): LS-DYNA's large format, five fields of 16 characters to a card of 80
+/// columns, as OpenRadioss's reader of LS-DYNA decks takes it (and as LS-PrePost's dynain
+/// headers space it); a card whose text runs past column 80 is in fields of 20 characters
+/// (pydyna writes those: docs/outputs.md).
+inline int large_field_width(const DataLine& line) {
+  std::size_t end = line.text.size();
+  while (end > 0 &&
+         (line.text[end - 1] == ' ' || line.text[end - 1] == '\t' || line.text[end - 1] == '\r'))
+    --end;
+  return end > 80 ? 20 : 16;
+}
+
 inline constexpr std::array kTitleCardFields{
     FieldSpec{.name = "TITLE",
               .type = FieldType::kText,

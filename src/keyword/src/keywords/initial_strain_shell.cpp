@@ -39,7 +39,8 @@ constexpr std::array kHeaderFields{
     FieldSpec{.name = "LARGE",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "0: 10-character fields; 1: 20-character fields, two cards per "
+              .description = "0: 10-character fields; 1: 16-character fields (20 where a card "
+                             "runs past column 80), two cards per "
                              "point",
               .allowed = kFlags},
     FieldSpec{.name = "UNUSED", .type = FieldType::kText, .description = "not used"},
@@ -73,9 +74,17 @@ constexpr std::array kPointFields{strain("EPSXX", 10),
                                   strain("EPSYZ", 10),
                                   strain("EPSZX", 10),
                                   zeta(10)};
-constexpr std::array kLargeFields1{strain("EPSXX", 20), strain("EPSYY", 20), strain("EPSZZ", 20),
-                                   strain("EPSXY", 20), strain("EPSYZ", 20)};
-constexpr std::array kLargeFields2{strain("EPSZX", 20), zeta(20)};
+// LARGE 1, in fields of W characters (16: LS-DYNA's; 20: pydyna's, common_cards.hpp).
+template <int W>
+constexpr std::array kLargeFields1{strain("EPSXX", W), strain("EPSYY", W), strain("EPSZZ", W),
+                                   strain("EPSXY", W), strain("EPSYZ", W)};
+template <int W>
+constexpr std::array kLargeFields2{strain("EPSZX", W), zeta(W)};
+template <int W>
+constexpr std::array kLargeCards{
+    CardSpec{.title = "Strain card 1 (LARGE 1)", .fields = kLargeFields1<W>},
+    CardSpec{.title = "Strain card 2 (LARGE 1)", .fields = kLargeFields2<W>},
+};
 constexpr std::array kCards{
     CardSpec{.title = "Header card",
              .fields = kHeaderFields,
@@ -84,11 +93,12 @@ constexpr std::array kCards{
              .fields = kPointFields,
              .presence = "NTHICK x NPLANE after the header"},
     CardSpec{.title = "Strain card 1 (LARGE 1)",
-             .fields = kLargeFields1,
-             .presence = "with LARGE 1, in place of the strain card"},
+             .fields = kLargeFields1<16>,
+             .presence = "with LARGE 1, in place of the strain card (fields of 20 characters "
+                         "where the card runs past column 80)"},
     CardSpec{.title = "Strain card 2 (LARGE 1)",
-             .fields = kLargeFields2,
-             .presence = "with LARGE 1, after strain card 1"},
+             .fields = kLargeFields2<16>,
+             .presence = "with LARGE 1, after strain card 1, in its field width"},
 };
 
 void read_initial_strain_shell(KeywordInput& in) {
@@ -106,14 +116,21 @@ void read_initial_strain_shell(KeywordInput& in) {
     d.where = in.where(line->line);
     for (int k = 0; k < d.nthick * d.nplane; ++k) {
       model::InitialStrainPoint p;
-      const CardValues a = in.next_card(d.large ? kCards[2] : kCards[1],
-                                        "strain card (EPSXX EPSYY EPSZZ EPSXY EPSYZ EPSZX T)");
+      const auto first = in.next_line();
+      if (!first) {
+        in.fail(line->line, "EPSXX",
+                "missing strain card (EPSXX EPSYY EPSZZ EPSXY EPSYZ EPSZX T): NTHICK x NPLANE "
+                "cards follow the header");
+      }
+      const auto& wide =
+          d.large && large_field_width(*first) == 20 ? kLargeCards<20> : kLargeCards<16>;
+      const CardValues a = in.read(d.large ? wide[0] : kCards[1], *first);
       constexpr std::array<std::string_view, 6> kNames{"EPSXX", "EPSYY", "EPSZZ",
                                                        "EPSXY", "EPSYZ", "EPSZX"};
       for (std::size_t c = 0; c < (d.large ? 5u : 6u); ++c)
         p.eps[c] = a.real(kNames[c]);
       if (d.large) {
-        const CardValues b = in.next_card(kCards[3], "strain card 2 (EPSZX T) of LARGE 1");
+        const CardValues b = in.next_card(wide[1], "strain card 2 (EPSZX T) of LARGE 1");
         p.eps[5] = b.real("EPSZX");
         p.t = b.real("T");
       } else {

@@ -1,9 +1,9 @@
 // *INITIAL_STRESS_SHELL: a shell's stress and effective plastic strain at t = 0 at each of its
 // points, global axes (LS-DYNA's dynain writes it so: docs/outputs.md). The header card
 // EID NPLANE NTHICK NHISV NTENSR LARGE NTHINT NTHHSV, then per point (NTHICK groups of NPLANE
-// in-plane points) one stress card of 10-character fields, or two of 20 with LARGE 1, each
-// followed by its NHISV history values (8 per card, 5 with LARGE 1). setup::build applies the
-// stresses (setup/build_initial_stress.cpp).
+// in-plane points) one stress card of 10-character fields, or with LARGE 1 two of 16 (20 where
+// the card runs past column 80: common_cards.hpp), each followed by its NHISV history values (8
+// per card, 5 with LARGE 1). setup::build applies the stresses (setup/build_initial_stress.cpp).
 #include <array>
 
 #include <fmt/format.h>
@@ -56,8 +56,8 @@ constexpr std::array kHeaderFields{
     FieldSpec{.name = "LARGE",
               .type = FieldType::kInteger,
               .unit = "-",
-              .description = "0: 10-character fields; 1: 20-character fields, two cards per "
-                             "point",
+              .description = "0: 10-character fields; 1: 16-character fields (20 where a card "
+                             "runs past column 80), two cards per point",
               .allowed = kFlags},
     FieldSpec{.name = "NTHINT",
               .type = FieldType::kInteger,
@@ -103,17 +103,20 @@ constexpr std::array kPointFields{
     stress("SIGZX", "stress zx", 10),
     plastic(10),
 };
+// LARGE 1, in fields of W characters (16: LS-DYNA's; 20: pydyna's, common_cards.hpp).
+template <int W>
 constexpr std::array kLargeFields1{
-    zeta(20),
-    stress("SIGXX", "stress xx, global axes", 20),
-    stress("SIGYY", "stress yy", 20),
-    stress("SIGZZ", "stress zz", 20),
-    stress("SIGXY", "stress xy", 20),
+    zeta(W),
+    stress("SIGXX", "stress xx, global axes", W),
+    stress("SIGYY", "stress yy", W),
+    stress("SIGZZ", "stress zz", W),
+    stress("SIGXY", "stress xy", W),
 };
+template <int W>
 constexpr std::array kLargeFields2{
-    stress("SIGYZ", "stress yz", 20),
-    stress("SIGZX", "stress zx", 20),
-    plastic(20),
+    stress("SIGYZ", "stress yz", W),
+    stress("SIGZX", "stress zx", W),
+    plastic(W),
 };
 constexpr std::array kHistoryFields{
     FieldSpec{.name = "HISV", .unit = "-", .description = "history value (not applied)"},
@@ -134,26 +137,33 @@ constexpr std::array kCards{
              .presence = "NTHICK x NPLANE after the header: per thickness point, its NPLANE "
                          "in-plane points"},
     CardSpec{.title = "Point card 1 (LARGE 1)",
-             .fields = kLargeFields1,
-             .presence = "with LARGE 1, in place of the point card"},
+             .fields = kLargeFields1<16>,
+             .presence = "with LARGE 1, in place of the point card (fields of 20 characters "
+                         "where the card runs past column 80)"},
     CardSpec{.title = "Point card 2 (LARGE 1)",
-             .fields = kLargeFields2,
-             .presence = "with LARGE 1, after point card 1"},
+             .fields = kLargeFields2<16>,
+             .presence = "with LARGE 1, after point card 1, in its field width"},
     CardSpec{.title = "History cards",
              .fields = kHistoryFields,
              .presence = "after each point when NHISV > 0: NHISV values, 8 per card (LARGE 1: "
-                         "5 per card of 20 characters)"},
+                         "5 per card, in the point's field width)"},
 };
-// The history values with LARGE 1: five fields of 20 characters.
+// The history values with LARGE 1: five fields of W characters.
+template <int W>
 constexpr std::array kLargeHistoryFields{
-    FieldSpec{.name = "HISV", .width = 20, .unit = "-", .description = "history value"},
-    FieldSpec{.name = "HISV", .width = 20, .unit = "-", .description = "history value"},
-    FieldSpec{.name = "HISV", .width = 20, .unit = "-", .description = "history value"},
-    FieldSpec{.name = "HISV", .width = 20, .unit = "-", .description = "history value"},
-    FieldSpec{.name = "HISV", .width = 20, .unit = "-", .description = "history value"},
+    FieldSpec{.name = "HISV", .width = W, .unit = "-", .description = "history value"},
+    FieldSpec{.name = "HISV", .width = W, .unit = "-", .description = "history value"},
+    FieldSpec{.name = "HISV", .width = W, .unit = "-", .description = "history value"},
+    FieldSpec{.name = "HISV", .width = W, .unit = "-", .description = "history value"},
+    FieldSpec{.name = "HISV", .width = W, .unit = "-", .description = "history value"},
 };
-constexpr CardSpec kLargeHistoryCard{.title = "History card (LARGE 1)",
-                                     .fields = kLargeHistoryFields};
+// The LARGE 1 cards of one width: point card 1, point card 2, history card.
+template <int W>
+constexpr std::array kLargeCards{
+    CardSpec{.title = "Point card 1 (LARGE 1)", .fields = kLargeFields1<W>},
+    CardSpec{.title = "Point card 2 (LARGE 1)", .fields = kLargeFields2<W>},
+    CardSpec{.title = "History card (LARGE 1)", .fields = kLargeHistoryFields<W>},
+};
 
 /// Reads one point: its stress card(s), then its history cards (read over: warned about once).
 model::InitialStressPoint read_point(KeywordInput& in, int header_line, bool large, int nhisv) {
@@ -164,14 +174,15 @@ model::InitialStressPoint read_point(KeywordInput& in, int header_line, bool lar
             "missing point card (T SIGXX ... EPS): NTHICK x NPLANE cards follow the header");
   }
   p.where = in.where(first->line);
-  const CardValues a = in.read(large ? kCards[2] : kCards[1], *first);
+  const auto& wide = large && large_field_width(*first) == 20 ? kLargeCards<20> : kLargeCards<16>;
+  const CardValues a = in.read(large ? wide[0] : kCards[1], *first);
   p.t = a.real("T");
   p.sigma[0] = a.real("SIGXX");
   p.sigma[1] = a.real("SIGYY");
   p.sigma[2] = a.real("SIGZZ");
   p.sigma[3] = a.real("SIGXY");
   if (large) {
-    const CardValues b = in.next_card(kCards[3], "point card 2 (SIGYZ SIGZX EPS) of LARGE 1");
+    const CardValues b = in.next_card(wide[1], "point card 2 (SIGYZ SIGZX EPS) of LARGE 1");
     p.sigma[4] = b.real("SIGYZ");
     p.sigma[5] = b.real("SIGZX");
     p.eps = b.real("EPS");
@@ -182,7 +193,7 @@ model::InitialStressPoint read_point(KeywordInput& in, int header_line, bool lar
   }
   const int per_card = large ? 5 : 8;
   for (int read = 0; read < nhisv; read += per_card)
-    (void)in.next_card(large ? kLargeHistoryCard : kCards[4], "history card (NHISV values)");
+    (void)in.next_card(large ? wide[2] : kCards[4], "history card (NHISV values)");
   return p;
 }
 
