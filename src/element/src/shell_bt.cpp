@@ -179,9 +179,13 @@ ShellResult bt(const core::ShellBlock& block, const M& mat, ShellBlockState& st,
       // normal strain.
       ColumnSums<1> cs;
       sum_columns<1>(st, b, q0, at0, unip, t, zeta, weight, kappa, plastic_heat, cs);
-      double nxx = cs.nxx[0], nyy = cs.nyy[0];
-      const double nxy = cs.nxy[0], mxx = cs.mxx[0], myy = cs.myy[0], mxy = cs.mxy[0];
-      const double qx = cs.qx[0], qy = cs.qy[0], tz = cs.tz;
+      // The resultants on the end-of-step thickness t (1 + tz), where the stresses sigma_{n+1}
+      // belong (shell_stages.hpp, thickness_resultants).
+      const double tz = cs.tz;
+      const ThicknessScale grow(tz);
+      double nxx = grow.n * cs.nxx[0], nyy = grow.n * cs.nyy[0];
+      const double nxy = grow.n * cs.nxy[0], mxx = grow.m * cs.mxx[0], myy = grow.m * cs.myy[0];
+      const double mxy = grow.m * cs.mxy[0], qx = grow.n * cs.qx[0], qy = grow.n * cs.qy[0];
       const double a = f.area[k_el];
       // The step's stress work counts on the mid-step volume: the thickness halfway through
       // its update, the area back half the step's in-plane dilatation from t_{n+1} (on the

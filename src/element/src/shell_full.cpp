@@ -222,15 +222,19 @@ ShellResult full(const core::ShellBlock& block, const M& mat, ShellBlockState& s
       ColumnSums<4> cs;
       sum_columns<4>(st, b, q0, at_el, unip, t, zeta, weight, kappa, plastic_heat, cs);
       const double tz = cs.tz;
+      // The resultants on the end-of-step thickness t (1 + tz), where the stresses sigma_{n+1}
+      // belong (shell_stages.hpp, ThicknessScale).
+      const ThicknessScale grow(tz);
       double fl[4][3] = {}, ml[4][2] = {};
       double wp = 0.0;
       const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
       // The element's books, summed into the range's in element order (ElementBooks).
       double internal = 0.0, p_start = 0.0, p_end = 0.0;
       for (std::size_t gp = 0; gp < 4; ++gp) {
-        double nxx = cs.nxx[gp], nyy = cs.nyy[gp];
-        const double nxy = cs.nxy[gp], mxx = cs.mxx[gp], myy = cs.myy[gp], mxy = cs.mxy[gp];
-        const double qx = cs.qx[gp], qy = cs.qy[gp];
+        double nxx = grow.n * cs.nxx[gp], nyy = grow.n * cs.nyy[gp];
+        const double nxy = grow.n * cs.nxy[gp], mxx = grow.m * cs.mxx[gp];
+        const double myy = grow.m * cs.myy[gp], mxy = grow.m * cs.mxy[gp];
+        const double qx = grow.n * cs.qx[gp], qy = grow.n * cs.qy[gp];
         const double da = DET[gp][k_el];  // Gauss weights 1
         wp += cs.plastic[gp] * 0.5 * t * da;
         // Midpoint rule on the point's mid-step volume, as the BT kernel books its one point.

@@ -359,6 +359,20 @@ struct ColumnSums {
   double work[G], plastic[G];
   double tz;
 };
+// The factors that put a column's resultants, summed over the thickness t_n of the step's start
+// (sum_columns), on the end-of-step thickness t_{n+1} = t_n (1 + tz): the stresses sigma_{n+1}
+// are the end configuration's, and so must be the thickness they act over (membrane and
+// transverse shear forces scale with t, moments with t^2). On t_n the thickness lagged its
+// stresses by a step: in a membrane under in-plane compression the Poisson thickening that
+// follows each oscillation of the in-plane strain then worked on the oscillation, and an
+// elastic sheet compressed by 1.4 % with its nodes held in z gained energy until it blew up
+// (ELFORM 2 and 16 alike, at any step; a soft core compressed at its free edge in the square
+// cup's frictionless sandwich did the same: examples/square_cup/README.md).
+struct ThicknessScale {
+  explicit ThicknessScale(double tz) : n(1.0 + tz), m((1.0 + tz) * (1.0 + tz)) {}
+  double n, m;  // forces, moments
+};
+
 template <std::size_t G, std::size_t P>
 [[gnu::always_inline]] inline void sum_columns(const ShellBlockState& st, const PointBuffers<P>& b,
                                                std::size_t q0, std::size_t at0, std::size_t nip,

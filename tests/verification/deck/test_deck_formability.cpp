@@ -43,14 +43,16 @@ constexpr double kMajor = 0.3;                   // ln(L / L0) imposed
 
 enum class Path { uniaxial, plane_strain, equibiaxial };
 
-/// *DEFINE_CURVE 1: a smooth step 0 -> 1 over 0.9 kEnd (no jump in velocity at the start), held.
+/// *DEFINE_CURVE 1: a smooth step 0 -> 1 over 0.9 kEnd, held: s^3 (10 - 15 s + 6 s^2), whose
+/// velocity and acceleration both start and end at zero, so that the stop does not set the free
+/// middle nodes ringing (the plastic patch has no damping to calm them before the end).
 std::string ramp_curve() {
   std::ostringstream os;
   os.precision(17);
   os << "*DEFINE_CURVE\n1,\n";
-  for (int k = 0; k <= 20; ++k) {
-    const double s = k / 20.0;
-    os << 0.9 * kEnd * s << "," << s * s * (3.0 - 2.0 * s) << "\n";
+  for (int k = 0; k <= 80; ++k) {
+    const double s = k / 80.0;
+    os << 0.9 * kEnd * s << "," << s * s * s * (10.0 - 15.0 * s + 6.0 * s * s) << "\n";
   }
   os << kEnd << ",1\n";
   return os.str();
