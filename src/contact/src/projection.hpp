@@ -330,7 +330,9 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
       continue;
     // About the true distance to the segment: the normal distance and, outside the segment,
     // the parametric overshoot times half the segment size.
-    const double score = std::hypot(L.sp.distance, L.sp.outside * pr.margin);
+    // (sqrt, not hypot: neither term comes near overflow, and it runs per candidate.)
+    const double over = L.sp.outside * pr.margin;
+    const double score = std::sqrt(L.sp.distance * L.sp.distance + over * over);
     const double f = facing(pr, k, L);
     const bool faces = f <= kFaces;
     const bool better = faces != best_faces        ? faces
