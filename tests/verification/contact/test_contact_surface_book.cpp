@@ -196,5 +196,50 @@ TEST(ContactSurfaceBook, APressedNodeThatSlidesOffTheMasterTakesItsSpringsEnergy
   }
 }
 
+// The reverse: a plate pressed 2 microns into a rigid plate while two of its five columns of
+// nodes (37.5 % of its area) overhang the master's edge, then slid back onto the master. Each
+// node that arrives is inside the master already, by less than the shallow first part of an
+// arrival the penalty pushes out (1 % of the offsets), and its spring takes energy that no
+// work put in: the surface book pays it (+ the springs' energy of the arrived share), and the
+// books close at every output. Before it did, the arrivals' energy was in no book (the
+// frictionless square cup's skins kept arriving at the core's receding edge).
+TEST(ContactSurfaceBook, APressedNodeThatArrivesOnTheMasterBooksItsSpringsEnergyAsSurface) {
+  constexpr double end = 4e-4, slide = 4.5, depth = 0.002;
+  test::DeckWriter d;
+  d.kw("*CONTROL_TERMINATION").card(end);
+  d.kw("*DATABASE_RCFORC").card(end / 100);
+  d.kw("*PART").kw("fixed rigid master").card(1, 1, 2);
+  d.kw("*PART").kw("slave").card(2, 1, 1);
+  d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(1.0, 1.0, 1.0, 1.0);
+  d.kw("*MAT_ELASTIC").card(1, 7.85e-9, 2.0e5, 0.3);
+  d.kw("*MAT_RIGID").card(2, 7.85e-9, 2.0e5, 0.3).card(1, 7, 7);
+  d.plate(1, 1, 1, 0.0, 10.0, 0.0, 6.0, 8, 4, 0.0);
+  const auto slave = d.plate(2, 1001, 1001, 6.0, 12.0, 0.0, 6.0, 4, 4, 0.5);
+  d.kw("*SET_NODE_LIST").card(2).ids(slave);
+  d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 1, 0, 1, 1, 1);
+  d.kw("*DEFINE_CURVE").card(1).card(0.0, 0.0).card(end / 4, -depth).card(end, -depth);
+  d.kw("*DEFINE_CURVE").card(2).card(0.0, 0.0).card(end / 4, 0.0);
+  for (int i = 1; i <= 40; ++i) {
+    const double s = i / 40.0;
+    d.card(end / 4 + s * 3 * end / 4, -slide * s * s * (3.0 - 2.0 * s));
+  }
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 3, 2, 1, 1.0);
+  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 1, 2, 2, 1.0);
+  d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(3, "plate slid onto the master");
+  d.card(2, 1, 3, 3).card(0).card(1, 1);
+  test::DeckRun r;
+  test::run_deck(d.text(), r);
+  ASSERT_FALSE(r.sink.contact.empty());
+  const auto& last = r.sink.contact.back().second.at(0);
+  ASSERT_GT(last.stored, 0.0);
+  const double arrived = 2.25 / 6.0;  // the share of the plate's area that was beyond x = 10
+  EXPECT_NEAR(last.surface, arrived * last.stored, 0.03 * arrived * last.stored);
+  for (const auto& [t, reports] : r.sink.contact) {
+    const auto& b = reports.at(0);
+    EXPECT_NEAR(b.work + b.surface, b.stored + b.friction + b.damping, 1e-3 * last.stored)
+        << "t = " << t;
+  }
+}
+
 }  // namespace test_contact_surface_book
 }  // namespace plyform
