@@ -45,4 +45,19 @@ struct RecordingSink : engine::OutputSink {
   }
 };
 
+/// A RecordingSink that also sums the constraints' reaction along one axis (0 x, 1 y, 2 z) over
+/// a set of nodes at every bndout time: `force` holds (time, sum).
+struct ReactionSink : RecordingSink {
+  std::vector<core::Index> nodes;
+  int axis = 0;
+  std::vector<std::pair<double, double>> force;
+  void boundary_forces(const engine::Snapshot& s) override {
+    const std::vector<double>& r = axis == 0 ? s.nodes->rx : axis == 1 ? s.nodes->ry : s.nodes->rz;
+    double f = 0.0;
+    for (core::Index n : nodes)
+      f += r[static_cast<std::size_t>(n)];
+    force.emplace_back(s.time, f);
+  }
+};
+
 }  // namespace plyform::test

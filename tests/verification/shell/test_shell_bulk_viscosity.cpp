@@ -22,40 +22,29 @@ namespace {
 
 constexpr double kRho = 1.0e-9, kE = 10.0, kNu = 0.3, kSpeed = 2000.0, kL0 = 2.0, kT = 0.1;
 
-struct ReactionSink : test::RecordingSink {
-  std::vector<core::Index> right;
-  std::vector<std::pair<double, double>> force;  // (time, x reaction summed over the right edge)
-  void boundary_forces(const Snapshot& s) override {
-    double f = 0.0;
-    for (core::Index n : right)
-      f += s.nodes->rx[static_cast<std::size_t>(n)];
-    force.emplace_back(s.time, f);
-  }
-};
-
-ReactionSink squeeze(bool on, core::ShellFormulation formulation) {
+test::ReactionSink squeeze(bool on, core::ShellFormulation formulation) {
   core::Model m = test::plate(kL0, kL0, 1, 1, kT, core::ElasticMaterial{kRho, kE, kNu}, 3);
   m.shell_blocks[0].formulation = formulation;
   m.shell_blocks[0].bulk_viscosity_on = on;
   m.shell_blocks[0].bulk_viscosity = {1.5, 0.06};
-  ReactionSink sink;
-  sink.right = test::nodes_where(m, [](double x, double, double) { return x > 0.5 * kL0; });
+  test::ReactionSink sink;
+  sink.nodes = test::nodes_where(m, [](double x, double, double) { return x > 0.5 * kL0; });
   const auto left = test::nodes_where(m, [](double x, double, double) { return x < 0.5 * kL0; });
   const auto top = test::nodes_where(m, [](double, double y, double) { return y > 0.5 * kL0; });
   const auto bottom = test::nodes_where(m, [](double, double y, double) { return y < 0.5 * kL0; });
   const unsigned still = core::dof_z | core::dof_rx | core::dof_ry | core::dof_rz;
   test::fix(m, left, core::dof_x | still);
   test::fix(m, bottom, core::dof_y | still);
-  test::fix(m, sink.right, still);
+  test::fix(m, sink.nodes, still);
   test::fix(m, top, still);
   const double end = 0.2 * kL0 / kSpeed;  // to 20 % compression
   const core::Index curve = test::add_curve(m, {0.0, end}, {-kSpeed, -kSpeed});
-  test::prescribe(m, sink.right, 0, core::MotionKind::velocity, curve);
+  test::prescribe(m, sink.nodes, 0, core::MotionKind::velocity, curve);
   test::prescribe(m, top, 1, core::MotionKind::velocity, curve);
   m.v0x.assign(m.node_count(), 0.0);
   m.v0y.assign(m.node_count(), 0.0);
   m.v0z.assign(m.node_count(), 0.0);
-  for (core::Index n : sink.right)
+  for (core::Index n : sink.nodes)
     m.v0x[static_cast<std::size_t>(n)] = -kSpeed;
   for (core::Index n : top)
     m.v0y[static_cast<std::size_t>(n)] = -kSpeed;
@@ -71,8 +60,8 @@ ReactionSink squeeze(bool on, core::ShellFormulation formulation) {
 }
 
 void check_squeeze(core::ShellFormulation formulation, const char* name) {
-  const ReactionSink with = squeeze(true, formulation);
-  const ReactionSink without = squeeze(false, formulation);
+  const test::ReactionSink with = squeeze(true, formulation);
+  const test::ReactionSink without = squeeze(false, formulation);
   const double c = std::sqrt(kE / (kRho * (1.0 - kNu * kNu)));
   const auto length = [&](double t) { return kL0 - kSpeed * t; };
   // The reaction without bulk viscosity, interpolated to a time (the runs' steps differ):

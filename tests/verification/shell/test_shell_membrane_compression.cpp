@@ -28,17 +28,6 @@ namespace {
 constexpr double kRho = 1.2e-9, kE = 1500.0, kL0 = 40.0, kW0 = 20.0, kT0 = 1.0;
 constexpr double kSpeed = 1000.0, kRamp = 0.8e-3;
 
-struct PushSink : test::RecordingSink {
-  std::vector<core::Index> pushed;
-  std::vector<std::pair<double, double>> force;  // (time, x reaction summed over the edge)
-  void boundary_forces(const Snapshot& s) override {
-    double f = 0.0;
-    for (core::Index n : pushed)
-      f += s.nodes->rx[static_cast<std::size_t>(n)];
-    force.emplace_back(s.time, f);
-  }
-};
-
 /// The pushed edge's travel at time t: the speed reached over kRamp, linearly.
 double travel(double t) {
   return t < kRamp ? 0.5 * kSpeed * t * t / kRamp : kSpeed * (t - 0.5 * kRamp);
@@ -47,8 +36,8 @@ double travel(double t) {
 void compress(core::ShellFormulation formulation, double nu, const char* name) {
   core::Model m = test::plate(kL0, kW0, 16, 8, kT0, core::ElasticMaterial{kRho, kE, nu}, 3);
   m.shell_blocks[0].formulation = formulation;
-  PushSink sink;
-  sink.pushed = test::nodes_where(m, [](double x, double, double) { return x > kL0 - 1e-9; });
+  test::ReactionSink sink;  // the pushed edge's x reaction
+  sink.nodes = test::nodes_where(m, [](double x, double, double) { return x > kL0 - 1e-9; });
   const auto left = test::nodes_where(m, [](double x, double, double) { return x < 1e-9; });
   const auto bottom = test::nodes_where(m, [](double, double y, double) { return y < 1e-9; });
   const auto every = test::nodes_where(m, [](double, double, double) { return true; });
@@ -57,7 +46,7 @@ void compress(core::ShellFormulation formulation, double nu, const char* name) {
   test::fix(m, bottom, core::dof_y);
   const double end = kRamp + (0.2 * kL0 - travel(kRamp)) / kSpeed;  // 20 % compression
   const core::Index curve = test::add_curve(m, {0.0, kRamp, 2.0 * end}, {0.0, -kSpeed, -kSpeed});
-  test::prescribe(m, sink.pushed, 0, core::MotionKind::velocity, curve);
+  test::prescribe(m, sink.nodes, 0, core::MotionKind::velocity, curve);
   m.controls.end_time = end;
   m.output.bndout_dt = end / 40;
   m.output.glstat_dt = end / 200;

@@ -18,33 +18,23 @@ namespace test_bulk_viscosity {
 
 constexpr double kRho = 1.0e-9, kE = 10.0, kNu = 0.3, kSpeed = 2000.0, kH0 = 2.0;
 
-struct ReactionSink : test::RecordingSink {
-  std::vector<core::Index> top;
-  std::vector<std::pair<double, double>> force;  // (time, z reaction summed over the top)
-  void boundary_forces(const Snapshot& s) override {
-    double f = 0.0;
-    for (core::Index n : top)
-      f += s.nodes->rz[static_cast<std::size_t>(n)];
-    force.emplace_back(s.time, f);
-  }
-};
-
-ReactionSink squeeze(double q1, double q2, core::SolidFormulation formulation) {
+test::ReactionSink squeeze(double q1, double q2, core::SolidFormulation formulation) {
   core::Model m = test::box(2.0, 2.0, kH0, 1, 1, 1, core::ElasticMaterial{kRho, kE, kNu});
   m.solid_blocks[0].formulation = formulation;
   m.solid_blocks[0].bulk_viscosity = {q1, q2};
-  ReactionSink sink;
-  sink.top = test::nodes_where(m, [](double, double, double z) { return z > 0.5 * kH0; });
+  test::ReactionSink sink;
+  sink.axis = 2;
+  sink.nodes = test::nodes_where(m, [](double, double, double z) { return z > 0.5 * kH0; });
   const auto bottom = test::nodes_where(m, [](double, double, double z) { return z < 0.5; });
   test::fix(m, bottom, core::dof_x | core::dof_y | core::dof_z);
-  test::fix(m, sink.top, core::dof_x | core::dof_y);
+  test::fix(m, sink.nodes, core::dof_x | core::dof_y);
   const double end = 0.2 * kH0 / kSpeed;  // to 20 % compression
-  test::prescribe(m, sink.top, 2, core::MotionKind::velocity,
+  test::prescribe(m, sink.nodes, 2, core::MotionKind::velocity,
                   test::add_curve(m, {0.0, end}, {-kSpeed, -kSpeed}));
   m.v0x.assign(m.node_count(), 0.0);
   m.v0y.assign(m.node_count(), 0.0);
   m.v0z.assign(m.node_count(), 0.0);
-  for (core::Index n : sink.top)
+  for (core::Index n : sink.nodes)
     m.v0z[static_cast<std::size_t>(n)] = -kSpeed;
   m.controls.end_time = end;
   m.output.bndout_dt = end / 20;
@@ -55,8 +45,8 @@ ReactionSink squeeze(double q1, double q2, core::SolidFormulation formulation) {
 }
 
 void check(core::SolidFormulation formulation) {
-  const ReactionSink with = squeeze(1.5, 0.06, formulation);
-  const ReactionSink without = squeeze(0.0, 0.0, formulation);
+  const test::ReactionSink with = squeeze(1.5, 0.06, formulation);
+  const test::ReactionSink without = squeeze(0.0, 0.0, formulation);
   const double m_mod = kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu));  // K + 4/3 G
   const double c = std::sqrt(m_mod / kRho);
   // The elastic stress of uniaxial strain (hypoelastic: the log strain) and q, on the top's
