@@ -11,6 +11,7 @@
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
 #include "slave_share.hpp"
+#include "surface_geometry.hpp"
 
 namespace plyform::contact {
 
@@ -226,6 +227,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         pr->st.seg_normal.assign(3 * (cp.segments.size() / 4), 0.0);
         pr->corner_sign.assign(cp.segments.size(), 1);
         pr->node_seg_sign.assign(pr->node_seg.size(), 1);
+        update_node_offsets(*pr);
       }
       passes_.push_back(std::move(pr));
     }
@@ -272,6 +274,8 @@ void ContactSet::follow_thickness(PassRuntime& pr) const {
     if (cp.segment_shell[s] >= 0)
       pr.st.seg_offset[s] = cp.segment_offset_factor[s] * t(cp.segment_shell[s]);
   }
+  if (pr.master_offsets)
+    update_node_offsets(pr);
   const std::size_t ns = cp.slave_count();
   for (std::size_t k = 0; k < ns; ++k) {
     const std::size_t b = cp.slave_shell_start[k], e = cp.slave_shell_start[k + 1];

@@ -61,6 +61,7 @@ void PassState::visit(core::StateArchive& a) {
   a.array("side", side);
   for (auto [name, v] : {std::pair{"slave_offset", &slave_offset},
                          {"seg_offset", &seg_offset},
+                         {"node_offset", &node_offset},
                          {"shape", &shape},
                          {"prev_shape", &prev_shape},
                          {"frame", &frame},

@@ -73,6 +73,9 @@ struct PassState {
   double dt_vote = kInf;
   // Contact half-thicknesses now (they follow the shells' thickness when the pass says so).
   std::vector<double> slave_offset, seg_offset;
+  // Per master node, the mean of its segments' offsets: the offset surface's corners sit there,
+  // so that two segments of different thickness meet (update_node_offsets).
+  std::vector<double> node_offset;
   // Per slave node.
   std::vector<core::Index> seg, prev_seg;
   std::vector<double> shape, prev_shape;  // 4 each

@@ -280,6 +280,51 @@ inline core::Index deeper_across_valley(const PassRuntime& pr, std::size_t k, co
   return found;
 }
 
+// Within this share of the offsets' band, a node's gap on the neighbour across an edge counts
+// as its gap on its own segment's extension (across_edge).
+constexpr double kAgreeBand = 1e-3;
+
+// A node whose projection has left its segment `cur` past an edge, where a neighbour of `cur`
+// holds it (or holds it less far outside), takes that neighbour once its gap there and on
+// `cur`'s extension part by more than kAgreeBand of the offsets (or of half a segment without
+// offsets). Over a ridge the offset surfaces of the two meet at the edge, so the gaps agree
+// there and part as the node rides on: kept on `cur` to MAXPAR's tolerance, its gap would jump
+// by the tolerance's overshoot times the sine of the kink when it finally changed (a bonded
+// node at a 35 degree kink of 1.5 mm segments: 11 um, past the cohesive law's peak opening).
+// Where the two faces are nearly flat (a bending layer's matching mesh, its nodes on the
+// master's corners) the gaps agree all the way, and the tolerance keeps the node from hunting
+// between the segments around a corner, which rang a stiff bonded ligament (the DCB). MAXPAR's
+// tolerance also stays for edges without a neighbour (a layer's free edge).
+inline core::Index across_edge(const PassRuntime& pr, std::size_t k, core::Index cur, bool free,
+                               bool was_located, const double* packed, double tol, Located& best) {
+  const auto cu = static_cast<std::size_t>(cur);
+  const double* p = at(packed, pr.pass->slave_nodes[k]);
+  const double tie = 1e-9;
+  core::Index found = cur;
+  Located across;
+  for (std::size_t j = pr.nb_start[cu]; j < pr.nb_start[cu + 1]; ++j) {
+    const core::Index s = pr.nb[j];
+    if (out_of_reach(pr, s, p, tol, packed))
+      continue;
+    const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
+    const double least = found == cur ? best.sp.outside : across.sp.outside;
+    if (L.sp.degenerate || !(L.sp.outside < least - tie) ||
+        std::fabs(L.sp.distance) > pr.st.seg_radius[static_cast<std::size_t>(s)] ||
+        behind(pr, s, L) || !(facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent))
+      continue;
+    across = L;
+    found = s;
+  }
+  if (found == cur)
+    return cur;
+  const double band = pr.st.slave_offset[k] + pr.st.seg_offset[cu];
+  const double agree = kAgreeBand * (band > 0.0 ? band : pr.margin);
+  if (!(std::fabs(across.side * across.sp.distance - best.side * best.sp.distance) > agree))
+    return cur;
+  best = across;
+  return found;
+}
+
 // The segment of slave k: its current one while the projection stays within MAXPAR - 1 of it
 // (parametric measure) and the node's surface faces it, else the nearest candidate within that
 // tolerance, the candidates the node's surface faces first. A node on an edge of the master (a
@@ -298,7 +343,10 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
         std::fabs(L.sp.distance) <= pr.st.seg_radius[static_cast<std::size_t>(cur)] &&
         !behind(pr, cur, L) && (facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent)) {
       best = L;
-      return deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
+      const core::Index s = deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
+      if (s != cur || !(best.sp.outside > 0.0))
+        return s;
+      return across_edge(pr, k, cur, free, was_located, packed, tol, best);
     }
   }
   // A node that has touched the master takes a new segment only within half the tolerance by
