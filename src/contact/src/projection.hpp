@@ -294,17 +294,39 @@ constexpr double kAgreeBand = 1e-3;
 // Where the two faces are nearly flat (a bending layer's matching mesh, its nodes on the
 // master's corners) the gaps agree all the way, and the tolerance keeps the node from hunting
 // between the segments around a corner, which rang a stiff bonded ligament (the DCB). MAXPAR's
-// tolerance also stays for edges without a neighbour (a layer's free edge).
+// tolerance also stays for edges without a neighbour (a layer's free edge), and for free nodes
+// (approaching, detached): no traction acts across their gap, so its jump costs nothing (and
+// the hot draw's kinematics 1-3 % instead of 5 %).
 inline core::Index across_edge(const PassRuntime& pr, std::size_t k, core::Index cur, bool free,
                                bool was_located, const double* packed, double tol, Located& best) {
   const auto cu = static_cast<std::size_t>(cur);
   const double* p = at(packed, pr.pass->slave_nodes[k]);
   const double tie = 1e-9;
+  // The corners the projection has passed: of a quad, those of the edge it crossed, or the one
+  // corner it passed diagonally (xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1); only a
+  // neighbour holding them all lies across (a node riding a flat junction inside MAXPAR's
+  // tolerance tries these each cycle, not all eight neighbours). A triangle's: any neighbour.
+  const core::Index* q = &pr.pass->segments[4 * cu];
+  bool passed[4] = {true, true, true, true};
+  if (q[2] != q[3]) {
+    const double* sh = best.sp.shape;
+    const double xi = sh[1] + sh[2] - sh[0] - sh[3], eta = sh[2] + sh[3] - sh[0] - sh[1];
+    const bool xp = xi > 1.0, ep = eta > 1.0;
+    const bool xm = xi < -1.0, em = eta < -1.0;
+    constexpr int cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
+    for (int c = 0; c < 4; ++c)
+      passed[c] =
+          (!xp || cx[c] > 0) && (!xm || cx[c] < 0) && (!ep || cy[c] > 0) && (!em || cy[c] < 0);
+  }
   core::Index found = cur;
   Located across;
   for (std::size_t j = pr.nb_start[cu]; j < pr.nb_start[cu + 1]; ++j) {
     const core::Index s = pr.nb[j];
-    if (out_of_reach(pr, s, p, tol, packed))
+    const core::Index* qs = &pr.pass->segments[4 * static_cast<std::size_t>(s)];
+    bool holds = true;
+    for (int c = 0; c < 4 && holds; ++c)
+      holds = !passed[c] || qs[0] == q[c] || qs[1] == q[c] || qs[2] == q[c] || qs[3] == q[c];
+    if (!holds || out_of_reach(pr, s, p, tol, packed))
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     const double least = found == cur ? best.sp.outside : across.sp.outside;
@@ -344,7 +366,7 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
         !behind(pr, cur, L) && (facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent)) {
       best = L;
       const core::Index s = deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
-      if (s != cur || !(best.sp.outside > 0.0))
+      if (s != cur || free || !(best.sp.outside > 0.0))
         return s;
       return across_edge(pr, k, cur, free, was_located, packed, tol, best);
     }
