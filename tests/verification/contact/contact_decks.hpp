@@ -106,6 +106,18 @@ class DeckWriter {
   std::ostringstream os_;
 };
 
+/// A `*USER_INTERFACE_FRICTION` for contact `id`: the cohesive law bonded at t = 0 (BOND_TOL
+/// 1e-3), C_N `cn`, sigma_max `smax` at every temperature, rate free, with no tangential
+/// adhesion, no friction, no healing and no damping: its books are the normal adhesion's alone.
+inline void bonded_without_shear(DeckWriter& d, int id, double cn, double smax) {
+  // UC1..UC20: MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC
+  // MU_LO MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
+  d.kw("*USER_INTERFACE_FRICTION").card(id, 20, 0);
+  d.card(1, cn, smax, smax, 100.0, 200.0, 1e-9, 0.0);
+  d.card(0.0, 1.0, 1e-3, 0, 0.0, 0.0, 0.0, 0.0);
+  d.card(0.0, 0.0, 1e-3, 0.0);
+}
+
 struct DeckRun {
   engine::RunResult result;
   RecordingSink sink;

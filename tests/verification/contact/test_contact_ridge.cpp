@@ -76,13 +76,7 @@ TEST(ContactRidge, ABondedNodeCarriedOverAKinkBetweenLayersOfTwoThicknessesKeeps
   d.kw("*SET_PART_LIST").card(1).card(1, 2);
   d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(1, "slider bonded on the ridge");
   d.card(3, 1, 3, 2).card(0).card(1, 1);
-  // UC1..UC20: MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC
-  // MU_LO MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT (no tangential adhesion, no friction,
-  // no damping).
-  d.kw("*USER_INTERFACE_FRICTION").card(1, 20, 0);
-  d.card(1, kCn, kSmax, kSmax, 100.0, 200.0, 1e-9, 0.0);
-  d.card(0.0, 1.0, 1e-3, 0, 0.0, 0.0, 0.0, 0.0);
-  d.card(0.0, 0.0, 1e-3, 0.0);
+  test::bonded_without_shear(d, 1, kCn, kSmax);
   test::DeckRun r;
   test::run_deck(d.text(), r);
   ASSERT_FALSE(r.sink.contact.empty());

@@ -125,12 +125,7 @@ TEST(ContactSurfaceBook, ABondedNodeThatSlidesOffTheMasterTakesItsAdhesionWithIt
   d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 1, 2, 2, 1.0);
   d.kw("*CONTACT_ONE_WAY_SURFACE_TO_SURFACE_ID").card(3, "bonded layers");
   d.card(2, 1, 3, 3).card(0).card(1, 1);
-  // UC1..UC20: MODEL CN SMAX_LO SMAX_HI T_LO T_HI ETA ZETA_LO ZETA_HI BETA0 BOND_TOL FRIC
-  // MU_LO MU_HI VISC_LO VISC_HI FILM_H VDC BETA_MIN CT
-  d.kw("*USER_INTERFACE_FRICTION").card(3, 20, 0);
-  d.card(1, cn, smax, smax, 100.0, 200.0, 1e-9, 0.0);
-  d.card(0.0, 1.0, 1e-3, 0, 0.0, 0.0, 0.0, 0.0);
-  d.card(0.0, 0.0, 1e-3, 0.0);
+  test::bonded_without_shear(d, 3, cn, smax);
   test::DeckRun r;
   test::run_deck(d.text(), r);
   ASSERT_FALSE(r.sink.contact.empty());
