@@ -296,7 +296,7 @@ constexpr double kAgreeBand = 1e-3;
 // between the segments around a corner, which rang a stiff bonded ligament (the DCB). MAXPAR's
 // tolerance also stays for edges without a neighbour (a layer's free edge), and for free nodes
 // (approaching, detached): no traction acts across their gap, so its jump costs nothing (and
-// the hot draw's kinematics 1-3 % instead of 5 %).
+// the hot draw's kinematics 1-4 % dearer instead of 5-16 %).
 inline core::Index across_edge(const PassRuntime& pr, std::size_t k, core::Index cur, bool free,
                                bool was_located, const double* packed, double tol, Located& best) {
   const auto cu = static_cast<std::size_t>(cur);
