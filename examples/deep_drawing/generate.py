@@ -249,12 +249,19 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="one-way", end_tim
     k += [f"{0.0:20.10g}{0.0:20.10g}\n", f"{hold_start:20.10g}{1.0:20.10g}\n",
           f"{end * 2:20.10g}{1.0:20.10g}\n"]
     k += ["*LOAD_RIGID_BODY\n", card(13, 3, 3, -quarter * HOLDER_FORCE)]
-    contacts = [(1, "punch on the upper skin", 3, 11), (2, "holder on the upper skin", 3, 13),
-                (3, "die under the lower skin", 1, 12)]
+    # The tools meet the blank's layers that can reach them (--tools-on, TOOL_SLAVES).
+    tool_set = TOOL_SLAVES[TOOLS_ON]
+    upper, lower = (("the upper skin", "the lower skin") if tool_set is None
+                    else (f"the {TOOLS_ON}",) * 2)
+    contacts = [(1, f"punch on {upper}", 3, 11), (2, f"holder on {upper}", 3, 13),
+                (3, f"die under {lower}", 1, 12)]
+    if tool_set is not None:
+        k += ["*SET_PART_LIST_TITLE\nthe layers the tools meet\n", card(5)] + ids(tool_set)
     for cid, title, slave, master in contacts:
         k += ["*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_THERMAL_ID\n",
               card(cid).rstrip("\n") + title + "\n"]
-        k += [card(slave, master, 3, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC),
+        slave, sstyp = (slave, 3) if tool_set is None else (5, 2)
+        k += [card(slave, master, sstyp, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC),
               card(1.0, 1.0), thermal_card(H_TOOL)]
     interfaces = [(4, "upper skin on the core", 3), (5, "lower skin on the core", 1)]
     if interface == "tiebreak":
@@ -303,6 +310,15 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="one-way", end_tim
     return "".join(k), params
 
 
+# The layers each tool's contact takes as its slave side: "outer" (the punch and the holder the
+# upper skin, the die the lower: the paper's deck), or a part set of the "skins" or of the
+# "blank" (every layer), as a forming contact is given the blank's parts. Where the
+# layers slip, the lower skin's edge strip comes out beyond the core's and the upper skin's
+# edges under the holder; only a contact that takes it keeps it under the holder's face.
+TOOL_SLAVES = {"outer": None, "skins": (1, 3), "blank": (1, 2, 3)}
+TOOLS_ON = "outer"
+
+
 def main(argv):
     ap = argparse.ArgumentParser(prog="generate.py", description=__doc__.splitlines()[0])
     ap.add_argument("outdir", nargs="?", default=".")
@@ -317,8 +333,11 @@ def main(argv):
                     help=f"one of {', '.join(TUNABLE)}")
     ap.add_argument("--shell-bulk-viscosity", action="store_true",
                     help="*CONTROL_BULK_VISCOSITY TYPE -2: bulk viscosity in the shells too")
+    ap.add_argument("--tools-on", choices=sorted(TOOL_SLAVES), default=TOOLS_ON,
+                    help="the layers the tools' contacts take (see TOOL_SLAVES)")
     ap.add_argument("--name", default=None)
     a = ap.parse_args(argv)
+    globals()["TOOLS_ON"] = a.tools_on
     for item in a.set:
         key, _, value = item.partition("=")
         if key not in TUNABLE or not value:

@@ -293,9 +293,11 @@ int run_deck(const RunOptions& given, std::ostream& terminal_out, std::ostream& 
     for (const core::ContactInterface& c : model.contacts)
       for (const core::ContactPass& p : c.passes)
         slaves += p.slave_count();
-    fmt::print(out, "contact: {} interface{}, {} slave nodes, energy {:.6g}, {} bucket sorts\n",
+    fmt::print(out,
+               "contact: {} interface{}, {} slave nodes, energy {:.6g}, {} bucket sorts, {:.1f} % "
+               "of the slave node-cycles at rest clear of the master\n",
                model.contacts.size(), model.contacts.size() == 1 ? "" : "s", slaves,
-               result.last.contact, result.contact_searches);
+               result.last.contact, result.contact_searches, 100.0 * result.contact_rested_share);
   }
   if (model.thermal.enabled) {
     const thermal::HeatLedger& h = result.heat;

@@ -14,6 +14,7 @@
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
 #include "plyform/core/stopwatch.hpp"
+#include "resting_nodes.hpp"
 #include "slave_share.hpp"
 #include "surface_geometry.hpp"
 #include "surface_reads.hpp"
@@ -48,24 +49,36 @@ void ContactSet::apply_pass(std::size_t ip, double t, double dt, const double* p
   // Re-search once the contact nodes moved far enough to bring a slave node near a segment
   // outside its candidate list (or at the deck's fixed interval).
   ++pr.st.cycles_since_search;
-  double moved = 0.0;
+  // The largest motion since the search, of any tracked node and of the master's (the
+  // resting nodes' margin, resting_nodes.hpp).
+  double moved = 0.0, master_moved = 0.0;
   const std::size_t nt = pr.tracked_nodes.size();
-#pragma omp parallel for schedule(static) reduction(max : moved) if (nt > kLightLoop)
+#pragma omp parallel for schedule(static) reduction(max : moved, master_moved) if (nt > kLightLoop)
   for (long lt = 0; lt < static_cast<long>(nt); ++lt) {
     const auto i = static_cast<std::size_t>(lt);
     const double* p = at(packed, pr.tracked_nodes[i]);
     const double dx = p[0] - pr.st.tracked_ref[3 * i], dy = p[1] - pr.st.tracked_ref[3 * i + 1],
                  dz = p[2] - pr.st.tracked_ref[3 * i + 2];
-    moved = std::max(moved, dx * dx + dy * dy + dz * dz);
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    moved = std::max(moved, d2);
+    if (pr.tracked_master[i] != 0)
+      master_moved = std::max(master_moved, d2);
   }
   const int interval = pr.iface->search_interval;
+  master_moved = std::sqrt(master_moved);
   if (!pr.st.searched || 2.0 * std::sqrt(moved) >= pr.margin ||
       (interval > 0 && pr.st.cycles_since_search >= interval)) {
     search(pr, packed, mass_, rigid_, rot_, tssfac_);
     ++pass_searches_[ip];
+    // New candidates, and the motion since the search starts again: every node wakes.
+    std::fill(pr.st.resting.begin(), pr.st.resting.end(), 0);
+    master_moved = 0.0;
   }
   pr.seconds[0] += clock.lap();
 
+  pass_rested_[ip] = static_cast<long>(rest_or_wake(pr, packed, master_moved));
+  pass_node_cycles_[ip] = static_cast<long>(
+      mine != nullptr ? std::count(mine, mine + ns, static_cast<unsigned char>(1)) : ns);
   find_surface_reads(pr, rot_.inertia != nullptr);
   measure_surfaces(pr, dt, packed);
   double lap = clock.lap();
@@ -196,6 +209,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
   active_.assign(np, 0);
   pass_shared_.assign(np, 0.0);
   pass_searches_.assign(np, 0);
+  pass_rested_.assign(np, 0);
+  pass_node_cycles_.assign(np, 0);
   // The passes' kinematics, law and forces read and write only their own state: where there
   // are several and their costs can be shared out evenly over the threads (a sandwich's
   // interfaces and tools), each runs whole on one thread, dearest first (their own loops then
@@ -241,6 +256,8 @@ void ContactSet::apply(double t, double dt, const double* packed, const double* 
   for (std::size_t ip = 0; ip < np; ++ip) {
     shared_seconds_ += pass_shared_[ip];
     searches_ += pass_searches_[ip];
+    rested_ += pass_rested_[ip];
+    node_cycles_ += pass_node_cycles_[ip];
   }
 
   // Over several ranks: what the scatter and the books read of every pass's slave nodes, from

@@ -10,6 +10,7 @@
 
 #include "pass_runtime.hpp"
 #include "plyform/core/invariant.hpp"
+#include "resting_nodes.hpp"
 #include "slave_share.hpp"
 #include "surface_geometry.hpp"
 
@@ -160,9 +161,13 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         mark[static_cast<std::size_t>(n)] = 1;
       for (core::Index n : cp.segments)
         mark[static_cast<std::size_t>(n)] = 1;
+      for (core::Index n : cp.segments)
+        mark[static_cast<std::size_t>(n)] = 2;
       for (std::size_t i = 0; i < mark.size(); ++i) {
-        if (mark[i])
+        if (mark[i]) {
           pr->tracked_nodes.push_back(static_cast<core::Index>(i));
+          pr->tracked_master.push_back(mark[i] == 2 ? 1 : 0);
+        }
       }
       pr->st.tracked_ref.assign(3 * pr->tracked_nodes.size(), 0.0);
       pr->st.seg.assign(ns, -1);
@@ -174,6 +179,12 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
         pr->st.tie_gap0.assign(ns, 0.0);
       }
       pr->st.prev_shape.assign(4 * ns, 0.0);
+      pr->may_rest = may_rest(*pr);
+      pr->rest_reach = rest_reach(*pr);
+      pr->st.resting.assign(ns, 0);
+      pr->st.rest_wait.assign(ns, 0);
+      pr->st.rest_room.assign(ns, 0.0);
+      pr->st.rest_from.assign(3 * ns, 0.0);
       pr->st.frame.assign(9 * ns, 0.0);
       pr->st.side.assign(ns, 0);
       for (auto* v :

@@ -11,6 +11,8 @@ namespace plyform::contact {
 
 void ContactSet::visit_state(core::StateArchive& a) {
   a.value("searches", searches_);
+  a.value("rested", rested_);
+  a.value("node_cycles", node_cycles_);
   for (std::size_t p = 0; p < passes_.size(); ++p) {
     const auto scope = a.scope("pass/" + std::to_string(p));
     PassRuntime& pr = *passes_[p];
@@ -42,6 +44,10 @@ void PassState::visit(core::StateArchive& a) {
   a.fixed("friction_heated", std::span<double>(friction_heated));
   a.fixed("tie_state", std::span<std::int8_t>(tie_state));
   a.fixed("tie_gap0", std::span<double>(tie_gap0));
+  a.fixed("resting", std::span<std::uint8_t>(resting));
+  a.fixed("rest_wait", std::span<std::uint8_t>(rest_wait));
+  a.fixed("rest_room", std::span<double>(rest_room));
+  a.fixed("rest_from", std::span<double>(rest_from));
   a.array("cand_start", cand_start);
   a.array("cand", cand);
   a.array("seg_radius", seg_radius);

@@ -119,7 +119,8 @@ void measure_slaves(PassRuntime& pr, double dt, const double* packed, const doub
     // Far (pass_runtime.hpp): two cycles measured it so already; only its temperature moves.
     const bool far =
         pr.st.seg[k] < 0 && pr.st.prev_seg[k] < 0 && pr.st.cand_start[k] == pr.st.cand_start[k + 1];
-    pr.passed_over[k] = far && pr.far_cycles[k] >= 2 ? 1 : 0;
+    // Resting (resting_nodes.hpp): clear of the master, with no force, until its margin is spent.
+    pr.passed_over[k] = (far && pr.far_cycles[k] >= 2) || pr.st.resting[k] != 0 ? 1 : 0;
     if (pr.passed_over[k] != 0) {
       pr.st.temperature[k] =
           temperature != nullptr ? temperature[static_cast<std::size_t>(node)] : 0.0;

@@ -121,6 +121,11 @@ struct PassState {
   // The _TIEBREAK option: per slave node its tie state and rest gap (empty without it).
   std::vector<std::int8_t> tie_state;
   std::vector<double> tie_gap0;
+  // Resting slave nodes (resting_nodes.hpp): per node whether it rests, the cycles before it is
+  // tried again when it was too close to rest, the margin its motion and the surfaces' may spend
+  // before it wakes, and where it came to rest (3 each).
+  std::vector<std::uint8_t> resting, rest_wait;
+  std::vector<double> rest_room, rest_from;
 
   /// Saves or restores every member (contact_state.cpp).
   void visit(core::StateArchive& a);
@@ -147,7 +152,8 @@ struct PassRuntime {
   bool guard = false;    // core::ContactPass::guard
   double far_gap = 0.0;  // the gap given to the law for a node with no segment in reach
   double dt0 = 0.0;
-  std::vector<core::Index> tracked_nodes;  // slave and master nodes, for motion since search
+  std::vector<core::Index> tracked_nodes;     // slave and master nodes, for motion since search
+  std::vector<unsigned char> tracked_master;  // per tracked node: 1 for a master's node
   /// Segments sharing a corner with each segment (CSR).
   std::vector<std::size_t> nb_start;
   std::vector<core::Index> nb;
@@ -166,6 +172,10 @@ struct PassRuntime {
   bool slave_face_normals_absent = false;    // a node set's slave side: no faces, no normals
   // Every master node is a rigid body's (a tool): its folds, once found, stay (update_folds).
   bool rigid_master = false;
+  // Whether the pass lets its clear nodes rest, and the gap within which a node with no force
+  // still matters to it (resting_nodes.hpp).
+  bool may_rest = false;
+  double rest_reach = 0.0;
   // Per model node: how many tiebreak passes hold it (ContactSet::tie_passes_at_), or null
   // when this pass does not tie.
   const std::uint8_t* ties_at = nullptr;

@@ -40,9 +40,12 @@ std::vector<SlaveArray> owner_arrays(PassRuntime& pr) {
   for (std::vector<double>* v :
        {&st.gap, &st.slip_x, &st.slip_y, &st.temperature, &st.k_normal, &st.k_tangent, &st.m_eff,
         &st.arrival_depth, &st.pressure, &st.tau_x, &st.tau_y, &st.stored, &st.gap_jump,
-        &st.end_power, &st.tie_gap0})
+        &st.end_power, &st.tie_gap0, &st.rest_room})
     add(a, *v, 1);
+  add(a, st.rest_from, 3);
   add(a, st.tie_state, 1);
+  add(a, st.resting, 1);
+  add(a, st.rest_wait, 1);
   const law::BatchHistory& h = pr.hist;
   add(a, h.state, 1);
   for (double* v : {h.beta, h.gap, h.slip_x, h.slip_y, h.opening_x, h.opening_y, h.e_damage,

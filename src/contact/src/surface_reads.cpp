@@ -58,8 +58,8 @@ void find_surface_reads(PassRuntime& pr, bool spins) {
       continue;
     const core::Index cur = pr.st.seg[k];
     const std::size_t c0 = pr.st.cand_start[k], c1 = pr.st.cand_start[k + 1];
-    if (cur < 0 && c0 == c1)
-      continue;
+    if ((cur < 0 && c0 == c1) || (own && pr.st.resting[k] != 0))
+      continue;  // far, or resting (resting_nodes.hpp): the kinematics pass over it
     if (!own) {  // its segment as the owner may find it: last cycle's, a neighbour, a candidate
       if (cur >= 0) {
         const auto cu = static_cast<std::size_t>(cur);

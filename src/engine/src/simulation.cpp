@@ -2196,6 +2196,7 @@ RunResult Simulation::run() {
   res.cycles = st.cycle;
   res.time = st.t;
   res.contact_searches = st.contact ? st.contact->searches() : 0;
+  res.contact_rested_share = st.contact ? st.contact->rested_share() : 0.0;
   if (st.heat) {
     res.thermal_steps = st.heat->steps();
     res.thermal_iterations = st.heat->iterations();

@@ -169,6 +169,13 @@ class ContactSet {
   [[nodiscard]] double shared_seconds() const { return shared_seconds_; }
   /// Full searches done so far (all passes).
   [[nodiscard]] long searches() const { return searches_; }
+  /// Of the slave node-cycles of the passes in their birth-death window so far (this rank's
+  /// nodes over several ranks), the share the kinematics, the law and the forces passed over
+  /// because the node rested clear of the master (resting_nodes.hpp); 0 before any.
+  [[nodiscard]] double rested_share() const {
+    return node_cycles_ > 0 ? static_cast<double>(rested_) / static_cast<double>(node_cycles_)
+                            : 0.0;
+  }
   /// Each interface's wall seconds in apply() by stage, in the model's order.
   [[nodiscard]] std::vector<InterfaceTiming> timing() const;
   /// Saves or restores what the passes carry from cycle to cycle (checkpoints): each slave
@@ -196,6 +203,7 @@ class ContactSet {
   Rotations rot_;
   std::vector<std::string> warnings_;
   long searches_ = 0;
+  long rested_ = 0, node_cycles_ = 0;  // rested_share()
   double tssfac_ = 0.9;
   // Over several ranks: per pass, its slave nodes shared out (empty on one rank); how many
   // apply() calls ran, and at which gather_state() last brought the state home.
@@ -208,7 +216,7 @@ class ContactSet {
                   const double* temperature);
   std::vector<std::size_t> pass_order_;
   std::vector<double> pass_cost_, pass_shared_, seconds_before_;
-  std::vector<long> pass_searches_;
+  std::vector<long> pass_searches_, pass_rested_, pass_node_cycles_;
   double exchange_seconds_ = 0.0;  // apply()'s exchange over the ranks
   double shared_seconds_ = 0.0;    // apply()'s work per slave node (shared_seconds())
   long applies_ = 0;

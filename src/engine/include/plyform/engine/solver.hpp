@@ -169,6 +169,9 @@ struct RunResult {
   /// with any is "completed, results not to be trusted" (plyform run exits 5).
   std::vector<Distrust> distrust;
   long contact_searches = 0;  ///< full contact searches (bucket sorts) done
+  /// The share of the contacts' slave node-cycles passed over at rest, clear of the master
+  /// (contact::ContactSet::rested_share).
+  double contact_rested_share = 0.0;
   /// Times the run dropped to one thread because its cores were shared (thread_governor.hpp),
   /// and the wall seconds it ran so.
   int thread_reductions = 0;
