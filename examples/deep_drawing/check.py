@@ -17,7 +17,9 @@ measured value; exit 1 when one fails):
 - each interface's books (stored + damage + viscous + friction + damping) within 2 % of the
   external work of its own work (README: what the books leave out where the core thickens);
 - the heat ledger closes: stored = the sum of the paths within 2 % of the largest path;
-- the layers stay in order: no core node beyond a skin's mid-surface in any state;
+- the layers stay in order: no node of a layer beyond a neighbouring layer's mid-surface in any
+  state, and none beyond the blank holder's face (a skin that slipped out from under the
+  others rises through it unless the holder's contact takes it);
 - beta in [0, 1] on every skin node in every state;
 - beta = 1 in every state on the upper skin's nodes that start under the middle of the punch
   face (within a quarter of the punch's width of the centre): the punch presses them onto
@@ -42,6 +44,7 @@ from histories import rows, states  # noqa: E402
 
 PUNCH_HALF = 35.0
 DIE_EDGE = 37.235 + 8.0  # the die opening's half-width plus its shoulder radius
+HOLDER_PART = 13  # the blank holder (examples/common/square_cup_tools.py: node ids 1300001...)
 
 
 def read_state(path, cells=False):
@@ -137,18 +140,26 @@ def main(outdir, params_path):
                f"start within {0.5 * PUNCH_HALF:.1f} mm of the centre, over {len(seq)} states")
     else:
         print("     (tiebreak interfaces: no adhesion intensity beta to check)")
-    worst_cross = (0, 0.0)
+    worst_cross, worst_holder, holder_side = (0, 0.0), (0, 0.0), None
     reach = 0.5 * p["blank_half"] / p["n"]
     for t, path in seq:
         x, pd, cd, conn = read_state(path, cells=True)
-        c = layer_order.crossings(x, pd["node_id"].astype(np.int64), conn,
-                                  cd["part"].astype(np.int64), min(p["skins"]), p["core"],
+        ids, cell_part = pd["node_id"].astype(np.int64), cd["part"].astype(np.int64)
+        c = layer_order.crossings(x, ids, conn, cell_part, min(p["skins"]), p["core"],
                                   max(p["skins"]), reach)
         if c > worst_cross[0]:
             worst_cross = (c, t)
+        h, holder_side = layer_order.tool_crossings(x, ids, conn, cell_part,
+                                                    (*p["skins"], p["core"]), HOLDER_PART,
+                                                    holder_side)
+        if h > worst_holder[0]:
+            worst_holder = (h, t)
     report("layers in order", worst_cross[0] == 0,
            f"at most {worst_cross[0]} nodes beyond a neighbouring layer's mid-surface (at t = "
            f"{worst_cross[1]:.4g} s) over {len(seq)} states")
+    report("layers under the holder", worst_holder[0] == 0,
+           f"at most {worst_holder[0]} nodes of the blank beyond the holder's face (at t = "
+           f"{worst_holder[1]:.4g} s) over {len(seq)} states")
     results["core_nodes_through_skins"] = worst_cross[0]
     _, pe, ce = read_state(seq[-1][1])
     node_part = part_of_node(pe["node_id"].astype(np.int64))

@@ -311,12 +311,12 @@ def deck(n=40, core_n=None, depth=25.0, full=False, interface="one-way", end_tim
 
 
 # The layers each tool's contact takes as its slave side: "outer" (the punch and the holder the
-# upper skin, the die the lower: the paper's deck), or a part set of the "skins" or of the
-# "blank" (every layer), as a forming contact is given the blank's parts. Where the
+# upper skin, the die the lower: the paper's deck), or a part set of the "skins" (the default)
+# or of the "blank" (every layer), as a forming contact is given the blank's parts. Where the
 # layers slip, the lower skin's edge strip comes out beyond the core's and the upper skin's
 # edges under the holder; only a contact that takes it keeps it under the holder's face.
 TOOL_SLAVES = {"outer": None, "skins": (1, 3), "blank": (1, 2, 3)}
-TOOLS_ON = "outer"
+TOOLS_ON = "skins"
 
 
 def main(argv):

@@ -5,7 +5,7 @@ Standard library only; runs with any Python 3.
 
     python3 generate.py [OUTDIR] [--layers 1|3] [--n N] [--depth D] [--speed V]
                         [--dt2ms DT] [--elform 2|16] [--plain] [--slave skin|core] [--backup]
-                        [--yield j2|barlat|hill] [--name NAME]
+                        [--tools-on skins|outer|blank] [--yield j2|barlat|hill] [--name NAME]
 
 The tool set follows the square-cup benchmark of NUMISHEET'93 (punch 70 mm square, blank
 150 mm square; the radii and the blank-holder force below): a rigid punch (moving down, its
@@ -19,8 +19,10 @@ planes x = 0 and y = 0. Each layer of the blank is its own shell mesh:
   (*USER_INTERFACE_FRICTION: C_N 100 MPa/mm, sigma_max 1 MPa, mu 0.2, VDC 10 %), the core the
   master side of each.
 
-The outer layers touch the tools through *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (the
-tool meshes are the tools' surfaces). --n N: elements along the quarter blank's edge (the
+The tools touch the blank through *CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE (the tool meshes
+are the tools' surfaces): a single sheet, or both skins of the sandwich as a part set
+(--tools-on outer: the upper skin for the punch and the holder, the lower for the die, as the
+paper's deck has them; --tools-on blank: every layer). --n N: elements along the quarter blank's edge (the
 core takes 2/3 of it). --depth D: punch travel (mm). --speed V: punch speed (mm/s).
 --dt2ms DT: mass scaling to the time step DT (0: none). --elform 16: the blank's shells fully
 integrated (no hourglass modes, so no *HOURGLASS on them) instead of Belytschko-Tsay.
@@ -138,11 +140,20 @@ def deck(layers=3, n=30, depth=30.0, speed=3000.0, dt2ms=0.0, core_n=None, end_t
           f"{end * 2:20.10g}{1.0:20.10g}\n"]
     k += ["*LOAD_RIGID_BODY\n", card(13, 3, 3, -0.25 * HOLDER_FORCE)]
     top, bottom = sheets[-1][0], sheets[0][0]
-    contacts = [(1, "punch on the upper surface", top, 11), (2, "holder on the upper surface", top, 13),
-                (3, "die under the lower surface", bottom, 12)]
+    # The tools meet the layers that can reach them (TOOLS_ON): with three layers, by default
+    # both skins, as a part set.
+    tool_set = TOOL_SLAVES[TOOLS_ON] if layers == 3 else None
+    upper, lower = ("the upper surface", "the lower surface") if tool_set is None else (
+        (f"the {TOOLS_ON}",) * 2)
+    contacts = [(1, f"punch on {upper}", top, 11), (2, f"holder on {upper}", top, 13),
+                (3, f"die under {lower}", bottom, 12)]
+    if tool_set is not None:
+        k += ["*SET_PART_LIST_TITLE\nthe layers the tools meet\n", card(5)] + ids(tool_set)
     for cid, title, slave, master in contacts:
+        slave, sstyp = (slave, 3) if tool_set is None else (5, 2)
         k += ["*CONTACT_FORMING_ONE_WAY_SURFACE_TO_SURFACE_ID\n", card(cid).rstrip("\n") + title + "\n"]
-        k += [card(slave, master, 3, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC), card(1.0, 1.0)]
+        k += [card(slave, master, sstyp, 3), card(FRICTION, FRICTION, 0.0, 0.0, TOOL_VDC),
+              card(1.0, 1.0)]
     if layers == 3:
         for cid, title, skin in ((4, "upper skin on the core", 3), (5, "lower skin on the core", 1)):
             # --slave core: the core is the slave side of both (a user's other choice).
@@ -215,6 +226,14 @@ PLAIN = False
 BACKUP = False
 # Which side of the cohesive contacts is the slave: "skin" (each skin against the core) or "core".
 SLAVE = "skin"
+# The layers each tool's contact takes as its slave side (three layers): "outer" (the punch
+# and the holder the upper skin, the die the lower: the paper's deck), or a part set of the
+# "skins" (the default) or of the "blank" (every layer), as a forming contact is given the
+# blank's parts. Where the layers slip, the lower skin's edge strip comes out beyond the
+# core's and the upper skin's edges under the holder: only a contact that takes it keeps it
+# under the holder's face (with "outer" it rose through it, README.md).
+TOOL_SLAVES = {"outer": None, "skins": (1, 3), "blank": (1, 2, 3)}
+TOOLS_ON = "skins"
 
 
 def main(argv):
@@ -252,6 +271,8 @@ def main(argv):
             globals()["SLAVE"] = args.pop(0)
         elif a == "--backup":
             globals()["BACKUP"] = True
+        elif a == "--tools-on":
+            globals()["TOOLS_ON"] = args.pop(0)
         elif a == "--name":
             name = args.pop(0)
         elif a.startswith("-"):
@@ -260,6 +281,8 @@ def main(argv):
             outdir = a
     if layers not in (1, 3):
         sys.exit("generate.py: --layers is 1 or 3")
+    if TOOLS_ON not in TOOL_SLAVES:
+        sys.exit(f"generate.py: --tools-on is one of {', '.join(TOOL_SLAVES)}")
     if SLAVE not in ("skin", "core"):
         sys.exit("generate.py: --slave is skin or core")
     if YIELD not in ("j2", "barlat", "hill"):
