@@ -38,16 +38,9 @@ for case in 1 3 plain mu0; do
   "${py}" "${here}/check.py" "${outdir}/${name}" "${outdir}/${name}.json" || status=1
   if [[ ${case} != 1 ]] && /usr/bin/python3 -c "import vtk, numpy" 2>/dev/null; then
     # Layers in order in every state (an independent reading of the states' geometry), none
-    # through the blank holder (part 13). The frictionless sandwich fails it: a named defect
-    # (README.md, "Layers in order"; issue 29), reported and not counted.
-    if ! /usr/bin/python3 "${here}/../common/layer_order.py" "${outdir}/${name}" --lower 1 \
-      --core 2 --upper 3 --reach 1.0 --tools 13; then
-      if [[ ${case} == mu0 ]]; then
-        echo "run.sh: known defect (issue 29): a core node through the upper skin at the end of the frictionless draw"
-      else
-        status=1
-      fi
-    fi
+    # through the blank holder (part 13).
+    /usr/bin/python3 "${here}/../common/layer_order.py" "${outdir}/${name}" --lower 1 --core 2 \
+      --upper 3 --reach 1.0 --tools 13 || status=1
   fi
 done
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then

@@ -297,36 +297,51 @@ constexpr double kAgreeBand = 1e-3;
 // tolerance also stays for edges without a neighbour (a layer's free edge), and for free nodes
 // (approaching, detached): no traction acts across their gap, so its jump costs nothing (and
 // the hot draw's kinematics 1-4 % dearer instead of 5-16 %).
+// The corners of segment `cur` that projection L has passed: of a quad, those of the edge it
+// crossed, or the one corner it passed diagonally (xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 -
+// N1); only a neighbour holding them all lies across. A triangle's: all (any neighbour).
+inline void passed_corners(const PassRuntime& pr, core::Index cur, const Located& L,
+                           bool passed[4]) {
+  const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(cur)];
+  for (int c = 0; c < 4; ++c)
+    passed[c] = true;
+  if (q[2] == q[3])
+    return;
+  const double* sh = L.sp.shape;
+  const double xi = sh[1] + sh[2] - sh[0] - sh[3], eta = sh[2] + sh[3] - sh[0] - sh[1];
+  const bool xp = xi > 1.0, ep = eta > 1.0;
+  const bool xm = xi < -1.0, em = eta < -1.0;
+  constexpr int cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
+  for (int c = 0; c < 4; ++c)
+    passed[c] =
+        (!xp || cx[c] > 0) && (!xm || cx[c] < 0) && (!ep || cy[c] > 0) && (!em || cy[c] < 0);
+}
+
+// Whether neighbour s of segment `cur` holds every corner in `passed`.
+inline bool holds_passed(const PassRuntime& pr, core::Index cur, core::Index s,
+                         const bool passed[4]) {
+  const core::Index* q = &pr.pass->segments[4 * static_cast<std::size_t>(cur)];
+  const core::Index* qs = &pr.pass->segments[4 * static_cast<std::size_t>(s)];
+  bool holds = true;
+  for (int c = 0; c < 4 && holds; ++c)
+    holds = !passed[c] || qs[0] == q[c] || qs[1] == q[c] || qs[2] == q[c] || qs[3] == q[c];
+  return holds;
+}
+
 inline core::Index across_edge(const PassRuntime& pr, std::size_t k, core::Index cur, bool free,
                                bool was_located, const double* packed, double tol, Located& best) {
   const auto cu = static_cast<std::size_t>(cur);
   const double* p = at(packed, pr.pass->slave_nodes[k]);
   const double tie = 1e-9;
-  // The corners the projection has passed: of a quad, those of the edge it crossed, or the one
-  // corner it passed diagonally (xi = N1 + N2 - N0 - N3, eta = N2 + N3 - N0 - N1); only a
-  // neighbour holding them all lies across (a node riding a flat junction inside MAXPAR's
-  // tolerance tries these each cycle, not all eight neighbours). A triangle's: any neighbour.
-  const core::Index* q = &pr.pass->segments[4 * cu];
-  bool passed[4] = {true, true, true, true};
-  if (q[2] != q[3]) {
-    const double* sh = best.sp.shape;
-    const double xi = sh[1] + sh[2] - sh[0] - sh[3], eta = sh[2] + sh[3] - sh[0] - sh[1];
-    const bool xp = xi > 1.0, ep = eta > 1.0;
-    const bool xm = xi < -1.0, em = eta < -1.0;
-    constexpr int cx[4] = {-1, 1, 1, -1}, cy[4] = {-1, -1, 1, 1};
-    for (int c = 0; c < 4; ++c)
-      passed[c] =
-          (!xp || cx[c] > 0) && (!xm || cx[c] < 0) && (!ep || cy[c] > 0) && (!em || cy[c] < 0);
-  }
+  // Only a neighbour holding the passed corners lies across (a node riding a flat junction
+  // inside MAXPAR's tolerance tries these each cycle, not all eight neighbours).
+  bool passed[4];
+  passed_corners(pr, cur, best, passed);
   core::Index found = cur;
   Located across;
   for (std::size_t j = pr.nb_start[cu]; j < pr.nb_start[cu + 1]; ++j) {
     const core::Index s = pr.nb[j];
-    const core::Index* qs = &pr.pass->segments[4 * static_cast<std::size_t>(s)];
-    bool holds = true;
-    for (int c = 0; c < 4 && holds; ++c)
-      holds = !passed[c] || qs[0] == q[c] || qs[1] == q[c] || qs[2] == q[c] || qs[3] == q[c];
-    if (!holds || out_of_reach(pr, s, p, tol, packed))
+    if (!holds_passed(pr, cur, s, passed) || out_of_reach(pr, s, p, tol, packed))
       continue;
     const Located L = project_on(pr, k, s, free, was_located, packed, nullptr);
     const double least = found == cur ? best.sp.outside : across.sp.outside;
@@ -347,6 +362,118 @@ inline core::Index across_edge(const PassRuntime& pr, std::size_t k, core::Index
   return found;
 }
 
+// How far outside (parametric) a pressed or bonded node may be of its segment in the gap of a
+// valley (in_valley_gap).
+constexpr double kValleyGap = 0.25;
+
+// A pressed or bonded node that has sunk into the master at a valley (a concave junction seen
+// from the slave: the inside of a bend) lies in the gap between the two faces' offset
+// surfaces, outside both by about the depth times the tangent of half the kink: on a coarse
+// core at the punch's corner (5.6 mm segments, about 35 degrees) a node 0.18 mm deep was
+// outside its segment by 0.028, past MAXPAR's tolerance, and outside its neighbour too. It
+// lost its segment, found one again 0.75 mm deep the next cycle, was let in as an arrival and
+// went through the core. There the nearest point of the master's surface is the crease (the
+// passed edge of the offset surface, or the passed corner): the node presses against it, its
+// gap minus the distance to it, its normal towards it (continuous with each face's at the
+// boundary of its gap). Either face's extension instead understates the depth and pushes
+// sideways (the node kept on its segment: the contact gave the model 41 J). Returns -1 where
+// the node is not inside the master by `cur` and by a neighbour holding the passed edge while
+// outside both (a layer's free edge, a convex edge: the node leaves, as before).
+inline core::Index in_valley_gap(const PassRuntime& pr, std::size_t k, core::Index cur,
+                                 bool was_located, const double* packed, Located& best) {
+  const auto cu = static_cast<std::size_t>(cur);
+  const core::Index* q = &pr.pass->segments[4 * cu];
+  if (q[2] == q[3])
+    return -1;
+  const Located Lc = project_on(pr, k, cur, false, was_located, packed, &pr.st.prev_shape[4 * k]);
+  if (Lc.sp.degenerate || !(Lc.sp.outside > 0.0) || Lc.sp.outside > kValleyGap ||
+      std::fabs(Lc.sp.distance) > pr.st.seg_radius[cu] || behind(pr, cur, Lc) ||
+      !(Lc.side * Lc.sp.distance < 0.0))
+    return -1;
+  // A valley's gap: inside the master by a neighbour holding the passed corners too, and
+  // outside it (beyond a convex edge, a block's top face over its side, the node is in front of
+  // the side face: it has left the master, as before).
+  bool passed[4];
+  passed_corners(pr, cur, Lc, passed);
+  bool valley = false;
+  for (std::size_t j = pr.nb_start[cu]; j < pr.nb_start[cu + 1] && !valley; ++j) {
+    const core::Index s = pr.nb[j];
+    if (!holds_passed(pr, cur, s, passed))
+      continue;
+    // It rises towards the slave's side of cur's plane (a kink of a degree at least: a flat
+    // junction, or a master's free edge passed at a corner, is no valley).
+    const core::Index* qs = &pr.pass->segments[4 * static_cast<std::size_t>(s)];
+    const int ns = qs[2] == qs[3] ? 3 : 4;
+    double rise = 0.0, reach2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      double c = 0.0;
+      for (int i = 0; i < ns; ++i)
+        c += at(packed, qs[i])[d];
+      const double v = c / ns - Lc.sp.x[d];
+      rise += v * Lc.sp.normal[d];
+      reach2 += v * v;
+    }
+    if (!(Lc.side * rise > 0.02 * std::sqrt(reach2)))
+      continue;
+    const Located L = project_on(pr, k, s, false, was_located, packed, nullptr);
+    valley = !L.sp.degenerate && L.side * L.sp.distance < 0.0 && L.sp.outside > 0.0 &&
+             L.sp.outside <= kValleyGap;
+  }
+  if (!valley)
+    return -1;
+  // The crease on the offset surface: the passed corners moved by their offsets.
+  int c0 = -1, c1 = -1;
+  for (int c = 0; c < 4; ++c) {
+    if (!passed[c])
+      continue;
+    (c0 < 0 ? c0 : c1) = c;
+  }
+  if (c1 < 0)
+    c1 = c0;
+  double e0[3], e1[3];
+  for (int i = 0; i < 2; ++i) {
+    const int c = i == 0 ? c0 : c1;
+    double r[3] = {0.0, 0.0, 0.0};
+    if (pr.master_offsets)
+      corner_offset(pr, cu, c, Lc.side, r);
+    const double* xc = at(packed, q[c]);
+    double* e = i == 0 ? e0 : e1;
+    for (int d = 0; d < 3; ++d)
+      e[d] = xc[d] + r[d];
+  }
+  const double* node = at(packed, pr.pass->slave_nodes[k]);
+  double ps[3], de[3], to[3];
+  for (int d = 0; d < 3; ++d) {
+    ps[d] = node[d] + Lc.rs[d];
+    de[d] = e1[d] - e0[d];
+  }
+  const double len2 = de[0] * de[0] + de[1] * de[1] + de[2] * de[2];
+  double t = 0.0;
+  if (len2 > 0.0)
+    t = std::clamp(
+        ((ps[0] - e0[0]) * de[0] + (ps[1] - e0[1]) * de[1] + (ps[2] - e0[2]) * de[2]) / len2, 0.0,
+        1.0);
+  for (int d = 0; d < 3; ++d)
+    to[d] = e0[d] + t * de[d] - ps[d];
+  const double dist = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
+  // The crease must lie out of the master from the node, along the face's outward normal.
+  const double out =
+      Lc.side * (to[0] * Lc.sp.normal[0] + to[1] * Lc.sp.normal[1] + to[2] * Lc.sp.normal[2]);
+  if (!(dist > 0.0) || !(out > 0.0))
+    return -1;
+  best = Lc;
+  for (int c = 0; c < 4; ++c)
+    best.sp.shape[c] = 0.0;
+  best.sp.shape[c0] += 1.0 - t;
+  best.sp.shape[c1] += t;
+  for (int d = 0; d < 3; ++d) {
+    best.sp.x[d] = ps[d] + to[d];
+    best.sp.normal[d] = Lc.side * to[d] / dist;
+  }
+  best.sp.distance = -Lc.side * dist;
+  return cur;
+}
+
 // The segment of slave k: its current one while the projection stays within MAXPAR - 1 of it
 // (parametric measure) and the node's surface faces it, else the nearest candidate within that
 // tolerance, the candidates the node's surface faces first. A node on an edge of the master (a
@@ -365,6 +492,10 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
         std::fabs(L.sp.distance) <= pr.st.seg_radius[static_cast<std::size_t>(cur)] &&
         !behind(pr, cur, L) && (facing(pr, k, L) <= kFaces || pr.slave_face_normals_absent)) {
       best = L;
+      // In a valley's gap from the moment the projection leaves `cur` (so that the gap is
+      // continuous where the node's foot reaches the crease).
+      if (!free && L.sp.outside > 0.0 && in_valley_gap(pr, k, cur, was_located, packed, best) >= 0)
+        return cur;
       const core::Index s = deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
       if (s != cur || free || !(best.sp.outside > 0.0))
         return s;
@@ -416,6 +547,8 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
       found = s;
     }
   }
+  if (found < 0 && cur >= 0 && !free)
+    return in_valley_gap(pr, k, cur, was_located, packed, best);
   return found;
 }
 
