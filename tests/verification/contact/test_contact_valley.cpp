@@ -12,16 +12,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "contact_decks.hpp"
 
 namespace plyform {
 namespace {
 
-TEST(ContactValley, ANodeCarriedAcrossAValleyKeepsItsSpringConservative) {
-  const double slope = std::tan(12.0 * M_PI / 180.0), cosine = std::cos(12.0 * M_PI / 180.0);
-  constexpr double kEnd = 1e-4, kReach = 0.2;  // the two offsets: 0.1 + 0.1
-  constexpr double kDeepest = 0.01, kClear = 0.01;
+constexpr double kEnd = 1e-4;
+
+// Runs the slider across a valley whose walls rise at `wall_degrees`, pressed `deepest` into
+// them at the bottom line, into `r`; returns the springs' largest stored energy and the largest
+// |stored - work| over the outputs, each output checked for stored = work within 1e-3 of the
+// former.
+std::pair<double, double> slide_across(double wall_degrees, double deepest, test::DeckRun& r) {
+  const double slope = std::tan(wall_degrees * M_PI / 180.0);
+  const double cosine = std::cos(wall_degrees * M_PI / 180.0);
+  constexpr double kReach = 0.2, kClear = 0.01;  // the two offsets: 0.1 + 0.1
   test::DeckWriter d;
   d.kw("*CONTROL_TERMINATION").card(kEnd);
   d.kw("*DATABASE_GLSTAT").card(kEnd / 400);
@@ -30,18 +38,19 @@ TEST(ContactValley, ANodeCarriedAcrossAValleyKeepsItsSpringConservative) {
   d.kw("*PART").kw("slider").card(2, 1, 1);
   d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(0.2, 0.2, 0.2, 0.2);
   d.kw("*MAT_ELASTIC").card(1, 7.85e-9, 2.0e5, 0.3);
-  // The valley: x in [0, 8], its bottom line at x = 4, 2 mm wide; the walls rise at 12 deg.
+  // The valley: x in [0, 8], its bottom line at x = 4, 2 mm wide, the walls rising at
+  // `wall_degrees`.
   d.kw("*NODE");
   for (int j = 0; j <= 1; ++j)
     for (int i = 0; i <= 2; ++i)
       d.card(1 + 3 * j + i, 4.0 * i, 2.0 * j, i == 1 ? 0.0 : 4.0 * slope);
   d.kw("*ELEMENT_SHELL").card(1, 1, 1, 2, 5, 4).card(2, 1, 2, 3, 6, 5);
   // The slider: one 0.05 mm shell carried from x = 3.5 to 4.5 along a V that follows the
-  // walls, its surface clear of them by 0.01 at both ends and pressed 0.01 into them over the
-  // bottom line (linearly between), every degree of freedom prescribed.
+  // walls, its surface clear of them by 0.01 at both ends and pressed `deepest` into them over
+  // the bottom line (linearly between), every degree of freedom prescribed.
   const auto height = [&](double x) {
     const double u = std::abs(x - 4.0);
-    const double press = (kDeepest + kClear) * std::max(0.0, 1.0 - u / 0.5);
+    const double press = (deepest + kClear) * std::max(0.0, 1.0 - u / 0.5);
     return u * slope + (kReach + kClear - press) / cosine;
   };
   constexpr double xc = 3.5, yc = 1.0, h = 0.025;
@@ -64,18 +73,23 @@ TEST(ContactValley, ANodeCarriedAcrossAValleyKeepsItsSpringConservative) {
   d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 3, 2, 2, 1.0);
   d.kw("*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_ID").card(1, "valley");
   d.card(2, 1, 3, 3).card(0.0, 0.0).card(1.0, 1.0);
-  test::DeckRun r;
   test::run_deck(d.text(), r);
-  ASSERT_FALSE(r.sink.contact.empty());
   double most = 0.0, worst = 0.0;
   for (const auto& [t, reports] : r.sink.contact)
     most = std::max(most, reports.at(0).stored);
-  ASSERT_GT(most, 0.0);
   for (const auto& [t, reports] : r.sink.contact) {
     const auto& c = reports.at(0);
     worst = std::max(worst, std::abs(c.stored - c.work));
     EXPECT_NEAR(c.stored, c.work, 1e-3 * most) << "t = " << t;
   }
+  return {most, worst};
+}
+
+TEST(ContactValley, ANodeCarriedAcrossAValleyKeepsItsSpringConservative) {
+  test::DeckRun r;
+  const auto [most, worst] = slide_across(12.0, 0.01, r);
+  ASSERT_FALSE(r.sink.contact.empty());
+  ASSERT_GT(most, 0.0);
   std::printf("valley: the springs held at most %.4g mJ; |stored - work| at most %.3g mJ\n", most,
               worst);
 }
@@ -88,63 +102,10 @@ TEST(ContactValley, ANodeCarriedAcrossAValleyKeepsItsSpringConservative) {
 // presses against the crease (projection.hpp, in_valley_gap): its force stays on, and its
 // spring stays a conservative spring of the distance to the surface.
 TEST(ContactValley, ANodePressedDeepIntoASharpValleyKeepsItsContactAndItsSpringConservative) {
-  const double slope = std::tan(30.0 * M_PI / 180.0), cosine = std::cos(30.0 * M_PI / 180.0);
-  constexpr double kEnd = 1e-4, kReach = 0.2;  // the two offsets: 0.1 + 0.1
-  constexpr double kDeepest = 0.2, kClear = 0.01;
-  test::DeckWriter d;
-  d.kw("*CONTROL_TERMINATION").card(kEnd);
-  d.kw("*DATABASE_GLSTAT").card(kEnd / 400);
-  d.kw("*DATABASE_RCFORC").card(kEnd / 400);
-  d.kw("*PART").kw("valley").card(1, 1, 1);
-  d.kw("*PART").kw("slider").card(2, 1, 1);
-  d.kw("*SECTION_SHELL").card(1, 2, 0.8333, 2).card(0.2, 0.2, 0.2, 0.2);
-  d.kw("*MAT_ELASTIC").card(1, 7.85e-9, 2.0e5, 0.3);
-  // The valley: x in [0, 8], its bottom line at x = 4, 2 mm wide; the walls rise at 30 deg.
-  d.kw("*NODE");
-  for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= 2; ++i)
-      d.card(1 + 3 * j + i, 4.0 * i, 2.0 * j, i == 1 ? 0.0 : 4.0 * slope);
-  d.kw("*ELEMENT_SHELL").card(1, 1, 1, 2, 5, 4).card(2, 1, 2, 3, 6, 5);
-  // The slider: one 0.05 mm shell carried from x = 3.5 to 4.5 along a V that follows the
-  // walls, its surface clear of them by 0.01 at both ends and pressed 0.01 into them over the
-  // bottom line (linearly between), every degree of freedom prescribed.
-  const auto height = [&](double x) {
-    const double u = std::abs(x - 4.0);
-    const double press = (kDeepest + kClear) * std::max(0.0, 1.0 - u / 0.5);
-    return u * slope + (kReach + kClear - press) / cosine;
-  };
-  constexpr double xc = 3.5, yc = 1.0, h = 0.025;
-  const double zc = height(xc);
-  d.kw("*NODE");
-  d.card(101, xc - h, yc - h, zc).card(102, xc + h, yc - h, zc).card(103, xc + h, yc + h, zc);
-  d.card(104, xc - h, yc + h, zc);
-  d.kw("*ELEMENT_SHELL").card(101, 2, 101, 102, 103, 104);
-  d.kw("*SET_NODE_LIST").card(1).ids({1, 2, 3, 4, 5, 6});
-  d.kw("*SET_NODE_LIST").card(2).ids({101, 102, 103, 104});
-  d.kw("*BOUNDARY_SPC_SET").card(1, 0, 1, 1, 1, 1, 1, 1);
-  d.kw("*BOUNDARY_SPC_SET").card(2, 0, 0, 1, 0, 1, 1, 1);
-  d.kw("*DEFINE_CURVE").card(1).card(0.0, 0.0).card(kEnd, 1.0);
-  d.kw("*DEFINE_CURVE").card(2);
-  for (int i = 0; i <= 200; ++i) {
-    const double t = kEnd * i / 200.0;
-    d.card(t, height(xc + t / kEnd) - zc);
-  }
-  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 1, 2, 1, 1.0);
-  d.kw("*BOUNDARY_PRESCRIBED_MOTION_SET").card(2, 3, 2, 2, 1.0);
-  d.kw("*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_ID").card(1, "valley");
-  d.card(2, 1, 3, 3).card(0.0, 0.0).card(1.0, 1.0);
   test::DeckRun r;
-  test::run_deck(d.text(), r);
+  const auto [most, worst] = slide_across(30.0, 0.2, r);
   ASSERT_FALSE(r.sink.contact.empty());
-  double most = 0.0, worst = 0.0;
-  for (const auto& [t, reports] : r.sink.contact)
-    most = std::max(most, reports.at(0).stored);
   ASSERT_GT(most, 0.0);
-  for (const auto& [t, reports] : r.sink.contact) {
-    const auto& c = reports.at(0);
-    worst = std::max(worst, std::abs(c.stored - c.work));
-    EXPECT_NEAR(c.stored, c.work, 1e-3 * most) << "t = " << t;
-  }
   // Pressed all the way across the bottom (the slider's middle third of the path): a force
   // pushing it out at every output.
   for (const auto& [t, reports] : r.sink.contact) {
