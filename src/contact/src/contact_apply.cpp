@@ -77,8 +77,7 @@ void ContactSet::apply_pass(std::size_t ip, double t, double dt, const double* p
   pr.seconds[0] += clock.lap();
 
   pass_rested_[ip] = static_cast<long>(rest_or_wake(pr, packed, master_moved));
-  pass_node_cycles_[ip] = static_cast<long>(
-      mine != nullptr ? std::count(mine, mine + ns, static_cast<unsigned char>(1)) : ns);
+  pass_node_cycles_[ip] = static_cast<long>(pr.own_slaves);
   find_surface_reads(pr, rot_.inertia != nullptr);
   measure_surfaces(pr, dt, packed);
   double lap = clock.lap();

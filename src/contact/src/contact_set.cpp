@@ -160,9 +160,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       for (core::Index n : cp.slave_nodes)
         mark[static_cast<std::size_t>(n)] = 1;
       for (core::Index n : cp.segments)
-        mark[static_cast<std::size_t>(n)] = 1;
-      for (core::Index n : cp.segments)
-        mark[static_cast<std::size_t>(n)] = 2;
+        mark[static_cast<std::size_t>(n)] = 2;  // a master's node (tracked_master)
       for (std::size_t i = 0; i < mark.size(); ++i) {
         if (mark[i]) {
           pr->tracked_nodes.push_back(static_cast<core::Index>(i));
@@ -181,6 +179,7 @@ ContactSet::ContactSet(const core::Model& model, const std::vector<double>& mass
       pr->st.prev_shape.assign(4 * ns, 0.0);
       pr->may_rest = may_rest(*pr);
       pr->rest_reach = rest_reach(*pr);
+      pr->own_slaves = ns;
       pr->st.resting.assign(ns, 0);
       pr->st.rest_wait.assign(ns, 0);
       pr->st.rest_room.assign(ns, 0.0);
@@ -319,6 +318,8 @@ void ContactSet::share_slaves(const comm::Communicator& comm, std::span<const in
     }
     shares_.push_back(std::make_unique<SlaveShare>(comm, owner));
     pp->mine = shares_.back()->mine().data();
+    pp->own_slaves = static_cast<std::size_t>(
+        std::count(pp->mine, pp->mine + owner.size(), static_cast<unsigned char>(1)));
     // A node this rank takes over is measured twice again before it is passed over as far
     // (pass_runtime.hpp): its count here is from when it was last this rank's.
     pp->far_cycles.assign(cp.slave_count(), 0);

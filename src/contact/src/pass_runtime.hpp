@@ -144,6 +144,7 @@ struct PassRuntime {
   PassState st;
   // Over several MPI ranks: 1 for the slave nodes this rank handles (null: all of them).
   const unsigned char* mine = nullptr;
+  std::size_t own_slaves = 0;  // how many of its slave nodes this rank handles
 
   // Fixed by the set-up (and start(), for the normals' signs).
   double margin = 0.0;

@@ -378,14 +378,15 @@ constexpr double kValleyGap = 0.25;
 // boundary of its gap). Either face's extension instead understates the depth and pushes
 // sideways (the node kept on its segment: the contact gave the model 41 J). Returns -1 where
 // the node is not inside the master by `cur` and by a neighbour holding the passed edge while
-// outside both (a layer's free edge, a convex edge: the node leaves, as before).
+// outside both (a layer's free edge, a convex edge: the node leaves, as before). `Lc`: the
+// node's projection on `cur`.
 inline core::Index in_valley_gap(const PassRuntime& pr, std::size_t k, core::Index cur,
-                                 bool was_located, const double* packed, Located& best) {
+                                 const Located& Lc, bool was_located, const double* packed,
+                                 Located& best) {
   const auto cu = static_cast<std::size_t>(cur);
   const core::Index* q = &pr.pass->segments[4 * cu];
   if (q[2] == q[3])
     return -1;
-  const Located Lc = project_on(pr, k, cur, false, was_located, packed, &pr.st.prev_shape[4 * k]);
   if (Lc.sp.degenerate || !(Lc.sp.outside > 0.0) || Lc.sp.outside > kValleyGap ||
       std::fabs(Lc.sp.distance) > pr.st.seg_radius[cu] || behind(pr, cur, Lc) ||
       !(Lc.side * Lc.sp.distance < 0.0))
@@ -494,7 +495,8 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
       best = L;
       // In a valley's gap from the moment the projection leaves `cur` (so that the gap is
       // continuous where the node's foot reaches the crease).
-      if (!free && L.sp.outside > 0.0 && in_valley_gap(pr, k, cur, was_located, packed, best) >= 0)
+      if (!free && L.sp.outside > 0.0 &&
+          in_valley_gap(pr, k, cur, L, was_located, packed, best) >= 0)
         return cur;
       const core::Index s = deeper_across_valley(pr, k, cur, free, was_located, packed, tol, best);
       if (s != cur || free || !(best.sp.outside > 0.0))
@@ -547,8 +549,10 @@ inline core::Index locate(const PassRuntime& pr, std::size_t k, bool free, bool 
       found = s;
     }
   }
-  if (found < 0 && cur >= 0 && !free)
-    return in_valley_gap(pr, k, cur, was_located, packed, best);
+  if (found < 0 && cur >= 0 && !free) {
+    const Located Lc = project_on(pr, k, cur, false, was_located, packed, &pr.st.prev_shape[4 * k]);
+    return in_valley_gap(pr, k, cur, Lc, was_located, packed, best);
+  }
   return found;
 }
 
